@@ -5,7 +5,8 @@ name an event (a show, a match, a service, a lecture) and not a vehicle or a per
 coach", "ahead of their teacher" say who goes first).
 
 An event said with a day's possessive ("ahead of tonight's whist drive", "in advance of Saturday's fun run")
-is an event whatever its head: a day has occasions, not places or people."""
+is an event whatever its head: a day has occasions, not places or people. A workplace's short meetings
+("the nine o'clock huddle", "the morning stand-up", issue 29) are events here too."""
 
 from __future__ import annotations
 
@@ -13,8 +14,11 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.event_names import EVENT_WORDS
 from grove_tui.language.sentence import Sentence
 
-# Less the words that also name people ("ahead of the class", "ahead of the tour party": who goes first).
-_EVENTS = EVENT_WORDS - lx.PERSON_NOUNS
+# Less the words that also name people ("ahead of the class", "ahead of the tour party": who goes first);
+# with a workplace's short meetings, which only "ahead of" a time makes events ("ahead of the 9 am huddle").
+_MEETINGS = frozenset("huddle standup stand-up catch-up catchup debrief sync retro retrospective handover "
+                      "hand-over review demo check-in all-hands inspection appointment interview".split())
+_EVENTS = (EVENT_WORDS | _MEETINGS) - lx.PERSON_NOUNS
 # Days whose possessive opens an event ("tonight's", "Saturday's").
 _DAYS = frozenset("""tonight tomorrow today yesterday evening morning afternoon weekend week month year monday
 tuesday wednesday thursday friday saturday sunday""".split())
@@ -38,4 +42,5 @@ def ahead_of_event(s: Sentence, i: int) -> int | None:
     if end <= start or end > s.n:
         return None
     head = end - 1
-    return end if s.lemma(head) in _EVENTS or s.low[head] in _EVENTS else None
+    joined = "".join(s.low[max(start, head - 2):end])  # "stand-up", "check-in" split at the hyphen
+    return end if s.lemma(head) in _EVENTS or s.low[head] in _EVENTS or joined in _MEETINGS else None

@@ -8,6 +8,7 @@ what people do or where, which the clause reader leaves to them:
   a problem is (problem_places.py); a place said by what is done there as the room, not a thing in it
   (activity_place_zones.py); a kind of place searched for that the world lacks, refused
   (searched_unknown.py), or a room searched for by a name the world lacks (the same);
+- breaking off to do something at a place ("break off to restock from the shelving": broken_off.py);
 - a purpose with its place said after going off ("for a cuppa in the canteen": leisure_places.py); an
   errand with a thing carried from one place to another (carried_errands.py); surprise at seeing the
   robot somewhere, said after a comma, whose occasion ("at a gig") is no place (surprised_at.py);
@@ -22,6 +23,7 @@ from dataclasses import replace
 
 from grove_tui.language.activity_place_zones import activity_place_zones
 from grove_tui.language.angry_approach import angry_approach
+from grove_tui.language.broken_off import broken_off
 from grove_tui.language.carried_errands import carried_errands
 from grove_tui.language.coming_over import coming_over_after_seeing
 from grove_tui.language.cleared_passive import cleared_away
@@ -49,7 +51,7 @@ def with_clause_passes(prompt: str, index: PlaceIndex, reading: PromptReading) -
     """The reading with the clause passes applied, in the order above."""
     groups = coloured_by_feeling(prompt, steering_clear_of_the_robot(cleared_away(crowding_round(index, pacing_between(index, reading.groups)))))
     groups = activity_place_zones(index, problem_places(prompt, index, purposed_places(index, groups)))
-    groups = its_people(prompt, index, queued_movers(index, surprised_at(prompt, carried_errands(index, leisure_places(index, groups)))))
+    groups = its_people(prompt, index, queued_movers(index, surprised_at(prompt, carried_errands(index, leisure_places(index, broken_off(index, groups))))))
     groups = feelings_said_outright(prompt, coming_over_after_seeing(prompt, dogging_the_robot(groups)))
     groups = hiding_after_seeing(groups)  # "sees the robot and scurries off to hide": avoiding it
     groups = surprised_when_fronted(prompt, groups)  # "Startled, the temp leaps back": surprise

@@ -15,6 +15,7 @@ from dataclasses import dataclass, field, replace
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.clause_cues import ClauseCues
+from grove_tui.language.settled_after_leaving import settled_after_leaving, settled_at
 from grove_tui.language.coming_in import lets_self_in, settled_after_coming
 from grove_tui.language.counts import duration_at
 from grove_tui.language.stay_particles import after_a_stay
@@ -533,6 +534,11 @@ class Clauses(ClauseCues):
             return "walk", came[2], came[0]
         if (came := settled_after_coming(s, candidates)) is not None:  # "come in ... and sit down at the desks"
             return "walk", came[2], came[0]
+        if (left := settled_after_leaving(s, candidates)) is not None:  # "head out of X and flop onto the couch"
+            sat = settled_at(s, candidates)
+            c.places = [replace(p, prep="to") if p.prep in ("at", "on", "in", "obj:at") and p.index > sat else p
+                        for p in c.places]
+            return "walk", left[2], left[0]
         for wanted in ("queue", "converse", "wait", "wander", "follow", "evacuate"):
             if wanted in kinds:
                 i, _, verb = candidates[kinds.index(wanted)]

@@ -3,7 +3,9 @@ around the check-in desk, a traveller ...", "After ten minutes sitting at the ba
 hour queuing by the counter, ...". The place after the "-ing" word (and a particle such as "around" or
 "about") is where the stay was spent, so it is where they start: that thing itself, not its room, as
 `stay_places` already reads "After forty minutes on the waiting chairs". A thing handled all that while
-("After half an hour fiddling with the bollards") is where they were too (round 54).
+("After half an hour fiddling with the bollards") is where they were too (round 54). A past participle
+of being kept somewhere ("After twenty minutes stuck at the help desk", "stranded by the gate"; issue 29)
+says where the stay was spent as the "-ing" word does.
 """
 
 from __future__ import annotations
@@ -13,12 +15,15 @@ from grove_tui.language.stay_places import stay_place_after
 
 # Particles that may stand between the "-ing" word and the place ("hanging around", "hanging about near").
 _PARTICLES = frozenset({"around", "round", "about"})
+# Past participles of being kept or settled somewhere, said where an "-ing" word would be.
+STAY_PARTICIPLES = frozenset("stuck stranded marooned trapped sat stood parked camped wedged seated perched "
+                             "slumped huddled holed".split())
 
 
 def participle_spot(s: Sentence, k: int) -> int | None:
     """The index of the preposition that says where a stay said with an "-ing" word at k was spent
     ("hanging around the desk": "around"; "sitting at the bar": "at"); None when none follows."""
-    if k >= s.n or not s.low[k].endswith("ing") or len(s.low[k]) < 5:
+    if k >= s.n or not (s.low[k].endswith("ing") and len(s.low[k]) >= 5 or s.low[k] in STAY_PARTICIPLES):
         return None
     j = k + 1
     with_at = j + 1 if j < s.n and s.low[j] in _PARTICLES else j
