@@ -1,5 +1,6 @@
 """Chat items with no verb but an "-ing" word (round 43): "3 from sales gossiping @ copier, 1 making toast
-in kitchen", "3 engineers + the intern arguing in mtg rm 2".
+in kitchen", "3 engineers + the intern arguing in mtg rm 2"; and a count with an article before "from"
+("the two from the chess club", round 58).
 
 - A count alone at the start of an item, before "from" or an "-ing" word, counts people: "3 from sales"
   is "3 people from sales", "1 making toast" is "1 person making toast" (the parser read the bare figures
@@ -21,6 +22,12 @@ _NUMBER = r"(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelv
 _ITEM_START = r"(^|[,;:]\s*)"
 # "3 from sales", "1 making toast": the count alone, then "from" or an "-ing" word.
 _BARE_COUNT = re.compile(_ITEM_START + r"(" + _NUMBER + r")\s+(?=(from\s+[a-z]|[a-z]{3,}ing\b))", re.IGNORECASE)
+# "the two from the chess club", "those three from accounts" (round 58): with an article before the count
+# the parser read "the two" as nobody. Words only: "the 10 from Leeds" is a train.
+_WORD_NUMBER = (r"(?:two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|thirteen|fourteen|fifteen|sixteen|"
+                r"seventeen|eighteen|nineteen|twenty|thirty|forty|fifty)")
+_COUNTED_FROM = re.compile(r"\b((?:the|those|these|all(?:\s+the)?)\s+" + _WORD_NUMBER + r")\s+(?=from\s+[A-Za-z])",
+                           re.IGNORECASE)
 # "3 engineers and the intern arguing": a counted plural and one person, then an "-ing" word.
 _LISTED = re.compile(_ITEM_START + r"(" + _NUMBER + r"\s+([a-z]+)\s+and\s+(?:the|a|an|his|her|their|our|1|one)\s+"
                      r"([a-z]+))\s+(?=([a-z]{3,}ing)\b)", re.IGNORECASE)
@@ -57,3 +64,8 @@ def chat_fragments(text: str) -> str:
 
     text = _LISTED.sub(listed, text)
     return _BARE_COUNT.sub(bare, text)
+
+
+def with_counted_from(text: str) -> str:
+    """The text with "the two from X" written "the two people from X", as "3 from sales" is."""
+    return _COUNTED_FROM.sub(lambda m: f"{m.group(1)} people ", text)

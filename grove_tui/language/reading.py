@@ -33,7 +33,6 @@ from grove_tui.language.asides import without_asides
 from grove_tui.language.awaited_events import with_until, without_awaited_things
 from grove_tui.language.second_names import without_second_names
 from grove_tui.language.chat_spelling import chat_to
-from grove_tui.language.counted_from import with_counted_from
 from grove_tui.language.scale_and_figures import with_scale_and_figures
 from grove_tui.language.fronted_lead_times import without_fronted_lead_times
 from grove_tui.language.homophone_slips import with_homophone_slips
@@ -165,7 +164,7 @@ from grove_tui.language.got_up import got_up_and_went
 from grove_tui.language.clause_passes import with_clause_passes
 from grove_tui.language.counted_chat_waits import as_counted_chat_wait
 from grove_tui.language.listed_chat_waits import as_listed_chat_wait
-from grove_tui.language.chat_fragments import chat_fragments
+from grove_tui.language.chat_fragments import chat_fragments, with_counted_from
 from grove_tui.language.chat_school_years import with_school_year_pupils
 from grove_tui.language.chat_joined_ing import with_joined_ing_items
 from grove_tui.language.fronted_passives import with_fronted_passives_after

@@ -1,6 +1,6 @@
 """Round 58 (r58c): a count with an article and no noun before "from" ("the four from accounts",
 "those two from the day ward") counts people, as the bare "three from sales" does
-(language/counted_from.py)."""
+(language/chat_fragments.with_counted_from)."""
 
 from __future__ import annotations
 

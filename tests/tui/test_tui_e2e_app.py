@@ -182,8 +182,10 @@ def test_a_user_path_at_80x24(tmp_path):
         terminal.press("Enter")
         terminal.wait_for(r"Trees · 6 agents", 20, "the reopened run")
         terminal.press("Escape")
-        screen = terminal.wait_for(r"f2 Worlds", 10, "setup").string
-        assert prompt_box(screen) == PROMPT and "Map: hospital" in screen
+        terminal.wait_for(r"f2 Worlds", 10, "setup")
+        # setup shows the run's choices when it resumes, a frame after it is back on screen
+        screen = terminal.wait_until(lambda s: prompt_box(s) == PROMPT and "Map: hospital" in s, 3,
+                                     "the reopened run's prompt and world on setup")
         assert "loading the models" in screen
         assert_quits_quickly(terminal, terminal_env, 80, 24, "while the model loads")
     finally:
