@@ -12,7 +12,8 @@ from __future__ import annotations
 import re
 
 from grove_tui.language import lexicon as lx
-from grove_tui.language.work_imperatives import _PERSON, _ROBOT, _singular, _third
+from grove_tui.language.work_imperatives import _PERSON, _ROBOT, _singular
+from grove_tui.language.tokens import third_person
 
 # Verbs an order can set someone to: going, staying, leading and carrying ("wheel", "take", "bring").
 _ORDERED = frozenset(lx.INTENT_VERBS) | lx.LEADING_VERBS | frozenset(
@@ -37,5 +38,5 @@ def as_ordered_clauses(text: str) -> str:
             lead = "; then "
         if not lead.strip() or lead.strip()[-1] in ".!?:":
             person = person[:1].upper() + person[1:]  # a sentence's first word, as written
-        return f"{lead}{person} {_third(verb) if _singular(person) else verb}"
+        return f"{lead}{person} {third_person(verb) if _singular(person) else verb}"
     return _ORDER.sub(said, text)

@@ -15,7 +15,7 @@ import re
 from grove_tui.language import lexicon as lx
 from grove_tui.language.parser import parse
 from grove_tui.language.pushed_aids import after_is_someone
-from grove_tui.language.tokens import verb_lemma
+from grove_tui.language.tokens import third_person, verb_lemma
 
 _PARTICIPLES = {"pushing": "push", "wheeling": "wheel", "guiding": "guide", "leading": "lead",
                 "escorting": "escort", "helping": "help", "steering": "steer", "shepherding": "shepherd",
@@ -28,15 +28,8 @@ _FRONTED = re.compile(rf"^(?P<part>{'|'.join(_PARTICIPLES)})\s+(?P<obj>[^,.;:!?]
                       rf"(?:\s+(?:{_PARTICLES}))?\s*,\s+(?P<rest>.+)$", re.IGNORECASE | re.DOTALL)
 _OWNED_THING = re.compile(r"^(?P<owner>.+?)(?:'s|s')\s+(?:\w+\s+)?(?P<thing>\w+)$")
 _PRONOUNS = frozenset({"him", "her", "them"})
-_ES = ("ch", "sh", "s", "x", "z", "o")
 _NOT_OBJECTS = frozenset({"the way", "a break", "a look", "a seat", "their time", "his time", "her time",
                           "a moment", "part", "care", "charge", "place", "turns", "a photo", "photos"})
-
-
-def _third(verb: str) -> str:
-    if verb.endswith("y") and verb[-2:-1] not in "aeiou":
-        return verb[:-1] + "ies"  # "carry": "carries"
-    return verb + ("es" if verb.endswith(_ES) else "s")
 
 
 def _person(obj: str) -> str:
@@ -81,5 +74,5 @@ def with_fronted_movers(text: str) -> str:
         said = f"{subject} {rest[root.start:after.start]}{person}{rest[after.end:]}"  # "brings him": her father
     else:
         verb = _PARTICIPLES[m.group("part").lower()]
-        said = f"{subject} {verb if root.tag == 'VBP' else _third(verb)} {person} and {tail}"
+        said = f"{subject} {verb if root.tag == 'VBP' else third_person(verb)} {person} and {tail}"
     return said[:1].upper() + said[1:]

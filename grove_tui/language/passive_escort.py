@@ -12,20 +12,12 @@ from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.parser import Word
+from grove_tui.language.tokens import third_person
 
 # Words for the taker that name no person: "taken to the hall by bus", "carried by the crowd" is kept. A way
 # out is the way they are taken, no taker ("are got out by the fire exit", "taken out by the side door").
 _NOT_TAKERS = frozenset("bus coach car taxi train lift elevator escalator stairs hand ambulance van shuttle "
                         "wheelchair stretcher trolley road foot escape stairwell staircase route".split()) | lx.DOOR_WORDS
-
-
-def _third_person(lemma: str) -> str:
-    """The present tense of a verb's base form for a singular subject: takes, pushes, carries."""
-    if lemma.endswith(("s", "sh", "ch", "x")):
-        return lemma + "es"
-    if lemma.endswith("y") and lemma[-2:-1] not in ("a", "e", "o", "u"):
-        return lemma[:-1] + "ies"
-    return lemma + "s"
 
 
 def _span(words: Sequence[Word], head: int) -> tuple[int, int]:
@@ -69,7 +61,7 @@ def to_active(text: str, words: Sequence[Word]) -> str | None:
         if agent.i == verb.i + 1 and not _route_follows(words, taker_last):
             continue
         singular = taker.tag in ("NN", "NNP") and not any(w.lower == "and" for w in words[taker_first:taker_last + 1])
-        active = _third_person(verb.lemma) if singular else verb.lemma
+        active = third_person(verb.lemma) if singular else verb.lemma
         taker_text = text[words[taker_first].start:words[taker_last].end]
         taken_text = text[words[first].start:words[last].end]
         route = text[verb.end:agent.start].rstrip() if agent.i > verb.i + 1 else ""

@@ -12,7 +12,8 @@ from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.parser import Word
-from grove_tui.language.passive_escort import _ROUTE_WORDS, _span, _third_person
+from grove_tui.language.passive_escort import _ROUTE_WORDS, _span
+from grove_tui.language.tokens import third_person
 
 _TAKING = lx.LEADING_VERBS | frozenset({"march", "frogmarch", "bundle", "hustle", "stretcher"})
 _COUNTED = frozenset("two three four five six seven eight nine ten some".split())
@@ -64,7 +65,7 @@ def late_agents_to_active(text: str, words: Sequence[Word]) -> str | None:
         # "Mrs Okoro, fresh from her scan, is wheeled ...": the aside is no part of whom the taker takes
         last = next((j - 1 for j in range(subject.i + 1, last + 1) if words[j].lower == ","), last)
         plural = words[taker_last].tag in ("NNS", "NNPS") or words[taker_first].lower in _COUNTED
-        active = verb.lemma if plural else _third_person(verb.lemma)
+        active = verb.lemma if plural else third_person(verb.lemma)
         taker_text = text[words[taker_first].start:words[taker_last].end]
         taken_text = text[words[first].start:words[last].end].rstrip(" ,")
         route = text[verb.end:words[by].start].rstrip()

@@ -10,7 +10,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from grove_tui.language.parser import Word
-from grove_tui.language.passive_escort import _ROUTE_WORDS, _span, _third_person
+from grove_tui.language.passive_escort import _ROUTE_WORDS, _span
+from grove_tui.language.tokens import third_person
 
 _CROWDING = frozenset("swamp mob invade overrun flood besiege throng crowd pack fill overwhelm inundate "
                       "descend mob jam".split())
@@ -45,7 +46,7 @@ def crowded_places_to_active(text: str, words: Sequence[Word]) -> str | None:
         people = words[by + 1:moving.i]
         plural = people[-1].tag in ("NNS", "NNPS") and not any(w.lower == "of" for w in people) or \
             people[0].lower in _COUNTED
-        finite = moving.lemma if plural else _third_person(moving.lemma)
+        finite = moving.lemma if plural else third_person(moving.lemma)
         place = text[words[first].start:words[last].end]
         if first == 0 and words[first].pos == "DET":
             place = place[:1].lower() + place[1:]

@@ -38,7 +38,9 @@ _KEEP_S = ("ss", "us", "is", "ous", "sis", "ics")
 _KNOWN_VERBS = frozenset(INTENT_VERBS) | frozenset(ROBOT_VERBS) | frozenset(
     "look keep stay step back shy steer move get stand line form hang catch have sit mill take lead see "
     "register check pick buy pay order collect drop fetch grab use wash print board eat drink work serve help tag "
-    "clean guard patrol deliver carry push wheel bring drive fill sign book".split()) | ZONE_EMPTYING_VERBS | \
+    "clean guard patrol deliver carry push wheel bring drive fill sign book "
+    # cries and starts of fright ("a patient shrieks and bolts"): verbs, though each has a plural noun
+    "scream shriek yell yelp squeal wail gasp flinch bolt".split()) | ZONE_EMPTYING_VERBS | \
     ROBOT_WAIT_VERBS | ROBOT_PATROL_VERBS | ROBOT_FOLLOW_VERBS | ROBOT_CROSS_VERBS | LEADING_VERBS | HUMAN_SUBJECT_VERBS | frozenset(
     # the verbs that open the lexicon's multi-word phrases ("shrink back", "empty out", "get out")
     phrase[0] for phrase in (*ROBOT_PHRASES, *EVACUATION_PHRASES, *URGENT_EXIT_PHRASES) if phrase[0].isalpha()
@@ -111,6 +113,17 @@ def verb_lemma(word: str) -> str:
 
 
 _WORD = re.compile(r"[a-z]&[a-z]\b|[a-z0-9]+(?:[,'][0-9]{3})*")  # "a&e" is one word, as the parser keeps it
+
+
+def third_person(verb: str) -> str:
+    """The present tense for one subject of a verb's base form, or of a phrase's first word: "takes",
+    "pushes", "carries", "goes", "mans up"."""
+    first, _, rest = verb.partition(" ")
+    if first.endswith("y") and first[-2:-1] not in ("a", "e", "i", "o", "u", ""):
+        first = first[:-1] + "ies"
+    else:
+        first += "es" if first.endswith(("ch", "sh", "s", "x", "z", "o")) else "s"
+    return f"{first} {rest}" if rest else first
 
 
 def words(text: str) -> list[str]:

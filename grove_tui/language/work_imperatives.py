@@ -9,9 +9,10 @@ from __future__ import annotations
 
 import re
 
+from grove_tui.language.tokens import third_person
+
 _WORK = ("man", "staff", "mind", "run", "cover", "watch", "work", "guard", "tend", "attend", "supervise",
          "manage", "oversee", "look after", "keep an eye on", "keep watch at", "keep watch over", "hold")
-_ES = ("ch", "sh", "s", "x", "z", "o")
 _PERSON = (r"(?:[A-Z][\w'-]*(?:\s+[A-Z][\w'-]*){0,2}"  # "Janet", "Janet Okoye"
            r"|(?:the|a|an|our|their|his|her|one|two|three|four|five|six|some|a\s+couple\s+of|\d+)"
            r"(?:\s+(?!to\b)[a-z][\w'-]*){1,3}?)")
@@ -35,17 +36,11 @@ def _singular(person: str) -> bool:
     return False
 
 
-def _third(verb: str) -> str:
-    first, _, rest = verb.partition(" ")
-    first = first + ("es" if first.endswith(_ES) else "s")
-    return f"{first} {rest}" if rest else first
-
-
 def as_workers(text: str) -> str:
     """The text with an order to work a post said as the worker's own clause (module doc)."""
     def said(m: re.Match[str]) -> str:
         person, verb = m.group(2), " ".join(m.group(3).split())
         if any(w.lower() in _ROBOT for w in person.split()):
             return m.group(0)  # "have the robot watch the door": the robot's own task
-        return f"{m.group(1)}{person} {_third(verb) if _singular(person) else verb}"
+        return f"{m.group(1)}{person} {third_person(verb) if _singular(person) else verb}"
     return _ORDER.sub(said, text)
