@@ -76,6 +76,7 @@ from grove_tui.language.clauses import Clauses
 from grove_tui.language.cleared_checkpoints import as_passed_checkpoints
 from grove_tui.language.place_part_counts import with_plain_parts
 from grove_tui.language.robot_aliases import with_robot_aliases
+from grove_tui.language.robot_place_names import without_robot_words_in_place_names
 from grove_tui.language.robot_headings import as_robot_order
 from grove_tui.language.converging import as_heading
 from grove_tui.language.shut_in import as_going_in
@@ -194,7 +195,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     index = place_index(world)
     text = going_to_get(with_joined_prefixes(without_adjective_commas(without_name_commas(as_chat_request(text), index))))  # "noodle bar q is like 8 deep rn, can u add that + a busker": the order asked for; "a pale, woozy student": one person; "to births, deaths and marriages": one name; "re-cable": one verb
     text = with_fronted_passives_after(with_full_is(text))  # "Dad's snoozing on the couch": Dad is snoozing, one person; "While X is restocked by a porter, ...": "X is restocked by a porter while ..."
-    text = as_robot_order(with_robot_aliases(text))  # "... sidesteps the machine": the robot; "Robot job: take X to Y": "Have the robot take X to Y"
+    text = as_robot_order(with_robot_aliases(without_robot_words_in_place_names(text, index)))  # "to the robot lab": the robotics lab, no robot; "... sidesteps the machine": the robot; "Robot job: take X to Y": "Have the robot take X to Y"
     text = with_robot_followers(with_robot_in_tow(text))  # "With a nurse in tow, the robot ...", "Followed by a nurse, the robot ...": the nurse follows the robot
     text = as_chat_wait(with_school_year_pupils(text))  # "12 yr7s in X": "12 year 7 pupils in X"; "guard @ cashpoint 2 mins then off to X": a wait, then the walk
     text = with_scattered_counts(with_joined_ing_items(with_counted_from(chat_fragments(as_listed_chat_wait(text)))))  # "the two from the chess club": two people; "3 from sales gossiping", "... @ desk, 10 mins then out"
