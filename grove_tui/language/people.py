@@ -6,6 +6,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.time_phrases import time_phrase_end
 from grove_tui.language.timer_people import timer_person
 from grove_tui.language.hazard_subjects import hazard_verb, hazard_word
 from grove_tui.language.adverbed_participles import adverb_before_participle
@@ -100,7 +101,7 @@ class People:
             return True  # "Dr Jones", "Mrs Patel"
         lem = s.lemma(i)
         if acting_as_verb(s, i) or a_load_of_things(s, i) or coach_as_vehicle(s, i) or failing_thing(s, i) or \
-                aid_thing(s, i):  # "inches her walker": a walking frame
+                aid_thing(s, i) or time_phrase_end(s, i):  # "inches her walker": a walking frame; "the instant the robot ...": a time
             return False  # "..., then guides 5 passengers": a verb, no guide; "a sack of pellets", "the Glasgow coach": things
         if role_thing(s, i):
             return True  # "the keynote speaker walks", "a session chair heads to ...": a role

@@ -313,11 +313,11 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         mine = [e for e in owned if match is not None and e.name == match.name]
         if len(owned) > 1 and not mine:
             owned = [e for e in owned if e.kind == "zone"] or owned  # "her office": the room, not its door
-        if len(owned) != 1 and not mine:
-            return None
-        e = (mine or owned)[0]  # the words may already name it: then the owner decides a tie
+        if not owned or (len(owned) != 1 and not mine and not all(o.kind == "zone" for o in owned)):
+            return None  # the words may name it: then the owner decides a tie; else one of their rooms, seeded
+        e = mine[0] if mine else owned[self.s.choose(0, len(owned) - 1, f"owned|{owner}|{head}")]
         return (PlaceMatch(e.name, e.kind, e.zone, match.score if match is not None else 1.0, False), 0.8,
-                f"'{' '.join(lemmas)}' of a {owner}: {e.name}", ())
+                f"'{' '.join(lemmas)}' of a {owner}: {e.name}", ())  # "a patient ... his room": a ward of theirs
 
     def _words(self, j: int) -> tuple[list[str], int]:
         """The words of a place phrase from j, and the index after them."""

@@ -68,13 +68,58 @@ def _described_people(words: list[Word], k: int) -> bool:
     return bool(before) and all(x.pos in ("ADJ", "ADV") for x in before)
 
 
+# Words opening a clause fronted before the main one ("When the robot comes round the corner, ..."),
+# and the nouns of time that open one after "the" ("The instant the robot rolls out of the lift, ...").
+_FRONTING = frozenset("when whenever as once after before while whilst if until till since".split())
+_TIME_NOUNS = frozenset("moment minute second instant time".split())
+
+
+def _fronted_comma(words: list[Word], k: int) -> int | None:
+    """The comma before k that closes a clause fronted before the main one in k's sentence ("When the
+    robot comes round the corner, ...", "The instant the robot rolls out of the lift, ..."), else None."""
+    start = next(j for j in range(k + 1) if words[j].sentence == words[k].sentence)
+    first = words[start].lower
+    timed = start + 1 < k and first in ("the", "every", "each", "any") and words[start + 1].lower in _TIME_NOUNS
+    if not (first in _FRONTING or timed):
+        return None
+    comma = max((j for j in range(start + 2, k) if words[j].lower == ","), default=None)
+    if comma is None or not any(x.pos in ("VERB", "AUX") for x in words[start:comma]):
+        return None
+    return comma
+
+
+def _after_a_fronted_clause(words: list[Word], k: int) -> list[Word]:
+    """The words of k's sentence before k, from after a fronted clause's comma if there is one: that
+    clause's verb is not one said before the person, whose own verb the parser took for a plural noun."""
+    comma = _fronted_comma(words, k)
+    if comma is not None:
+        return words[comma + 1:k]
+    return [x for x in words[:k] if x.sentence == words[k].sentence]
+
+
+def _subjects_after_fronted_clauses(words: list[Word]) -> list[Word]:
+    """The parse with the noun phrase right after a fronted clause's comma the subject of the verb that
+    follows it ("The moment the robot trundles up to gate B2, a nervous flyer gasps": the flyer gasps),
+    where the parser hung it on the clause before as an apposition."""
+    out = list(words)
+    for k in range(2, len(out)):
+        verb, noun = out[k], out[k - 1]
+        if verb.pos != "VERB" or verb.tag not in ("VBZ", "VBD", "VBP") or noun.pos != "NOUN" or noun.dep == "nsubj":
+            continue
+        comma = _fronted_comma(out, k)
+        phrase = out[comma + 1:k] if comma is not None else []
+        if len(phrase) >= 2 and phrase[0].pos == "DET" and all(x.pos in ("DET", "ADJ", "NOUN", "ADV") for x in phrase):
+            out[k - 1] = replace(noun, dep="nsubj", head=k)
+    return out
+
+
 def _taken_for_noun(words: list[Word], k: int) -> bool:
     w = words[k]
     if k == 0 or not (_verb_form(w) or (_named_before(words, k) and w.tag == "NNS" and w.lower.endswith("s"))):
         return False
     if _described_people(words, k):
         return False
-    before = [x for x in words[:k] if x.sentence == w.sentence]
+    before = _after_a_fronted_clause(words, k)
     if not before or any(x.pos not in _SUBJECT_WORDS and x.tag != "POS" for x in before):  # "the porter's pal"
         return False  # a verb before it: "they wait by the taxi ranks"
     if any(x.tag in ("NNS", "NNPS") or (x.pos == "NUM" and x.lower != "one") for x in before):
@@ -124,7 +169,7 @@ def as_singular_verbs(words: list[Word]) -> list[Word]:
             out[root] = replace(out[root], dep="nsubj", head=k)
     # "some 30 well-wishers drift out of ...": the plural's verb, too; "Dave scoots across": its subject;
     # "is frightened of the robot and cowers whenever ...": one person's second verb
-    out = with_shaped_subjects(out)  # "The croupier bolts from ...": a person, taken for an adjective
+    out = with_shaped_subjects(_subjects_after_fronted_clauses(out))  # "The croupier bolts from ...": a person, taken for an adjective
     out = as_later_verbs(as_second_verbs(origins_not_subjects(subjects_of_subjectless_verbs(verbs_after_names(as_plural_verbs(as_collective_verbs(out)))))))
     return as_plural_gathering_verbs(as_gathering_verbs(out))  # "a class of twenty crowds about the robot"
 
