@@ -182,6 +182,9 @@ class Collectives:
         if size is None:
             low_, high_ = lx.IMPLIED_RANGES[noun]
             party = s.choose(low_, high_, f"{head}:{noun}")
+            if parties == 1 and noun in lx.VEHICLE_LOADS and label != noun:
+                # "a coachload of cyclists": as many as a coach holds, a number nobody said
+                return Count("vague", party, low_, high_, *((1, party) if together else (None, None)))
             if parties == 1:
                 return Count("implied", party, low_, high_, *((1, party) if together else (None, None)))
             return Count("structured", parties * party, parties * low_, parties * high_, parties, party)

@@ -23,6 +23,7 @@ from grove_tui.language.chat_spelling import spell_out
 from grove_tui.language.chat_years import chat_years
 from grove_tui.language.some_one import some_one
 from grove_tui.language.count_spelling import count_words_spelt
+from grove_tui.language.ish_counts import ish_counts
 from grove_tui.language.kin_counts import kin_counts
 from grove_tui.language.placing_lists import placing_lists
 from grove_tui.language.placing_verbs import placing_verbs
@@ -58,12 +59,7 @@ _NUMBERED_BY = frozenset("gate desk platform room aisle till lane court ward bay
                          "table bed screen track pier dock berth stop zone area block wing unit".split())
 # "~30 pax", "~ 10 people": about so many (read before "+"/"&" join items, so "hut + ~10 juniors" is two)
 _TILDE = re.compile(r"(?<![\w~])~\s*(?=\d)")
-# A number written in words takes "-ish" too ("forty-ish fans", "twelveish"): the words of tens and
-# teens only, so no other word ending "-ish" (a "tallish" man) is read as a count.
 _NUMBER_WORD = r"(?:twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety|hundred|ten|eleven|twelve|[a-z]+teen)"
-# "30-ish visitors", "20ish ppl": about so many
-_ISH = re.compile(r"\b(\d+|" + _NUMBER_WORD + r"|(?:one|two|three|four|five|six|seven|eight|nine)(?=-))\s*-?\s*ish\b",
-                  re.IGNORECASE)
 # "a dozen-ish kids", "half a dozen-ish": a dozen or so
 _DOZEN_ISH = re.compile(r"\b(?:(a|half\s+a)\s+)?dozen\s*-?\s*ish\b", re.IGNORECASE)
 
@@ -114,7 +110,7 @@ def normalise(text: str) -> str:
     kept = _ARROW.sub(" to ", _ROUTE_ARROW.sub(_route_start, _N_EQUALS.sub("", kept)))
     kept = _TIMES_BEFORE.sub(lambda m: f"{m.group(1) or m.group(2)} ", _TIMES_AFTER.sub(r"\2 \1", kept))
     kept = _DOZEN_ISH.sub(lambda m: f"{m.group(1) or 'a'} dozen or so", kept)
-    kept = _ISH.sub(lambda m: f"about {m.group(1).lower()}", _TILDE.sub("about ", _AT_SIGN.sub("at ", kept)))
+    kept = ish_counts(_TILDE.sub("about ", _AT_SIGN.sub("at ", kept)))  # "the 200-ish fans", "30ish"
     kept = _FOR_TO.sub(lambda m: " for " if m.group(1) == "4" else " to ", kept)
     kept = _FOR_LAST.sub(_for_the_last, kept)
     kept = _CHAT_WORD.sub(lambda m: _spelled_out(m.group(1)), kept)

@@ -41,7 +41,7 @@ def test_a_count_after_an_unknown_collective_counts_its_members(read, world, pro
 @pytest.mark.parametrize("world,prompt,kind,low,high", [
     ("museum", "A horde of schoolkids mills under the whale skeleton.", "vague", 15, 30),
     ("mall", "A crowd of shoppers waits by the fountain.", "vague", 15, 30),
-    ("airport", "A coachload of pensioners walks to the check-in hall.", "implied", 30, 50),
+    ("airport", "A coachload of pensioners walks to the check-in hall.", "vague", 30, 50),  # a number nobody said
     ("hospital", "A group of visitors waits in the cafeteria.", "implied", 3, 5),
 ])
 def test_known_collectives_keep_their_count(read, world, prompt, kind, low, high):
