@@ -11,7 +11,8 @@ what people do or where, which the clause reader leaves to them:
 - breaking off to do something at a place ("break off to restock from the shelving": broken_off.py);
   walking an animal in a place, wandering there ("walking dogs in the paddock": walked_animals.py);
 - a purpose with its place said after going off ("for a cuppa in the canteen": leisure_places.py); an
-  errand with a thing carried from one place to another (carried_errands.py); surprise at seeing the
+  errand with a thing carried from one place to another (carried_errands.py), or gathered at one and
+  dropped at another (gathered_and_dropped.py); surprise at seeing the
   robot somewhere, said after a comma, whose occasion ("at a gig") is no place (surprised_at.py);
 - going off to hide after seeing the robot, an avoidance (robot_hiding.py); a step back or aside from the
   robot where one stands, located there (stepped_aside.py); coming up to the robot in anger, Threatening
@@ -29,6 +30,7 @@ from grove_tui.language.carried_errands import carried_errands
 from grove_tui.language.coming_over import coming_over_after_seeing
 from grove_tui.language.cleared_passive import cleared_away
 from grove_tui.language.crowding_round import crowding_round
+from grove_tui.language.gathered_and_dropped import gathered_and_dropped
 from grove_tui.language.dogged_steps import dogging_the_robot
 from grove_tui.language.feeling_adjectives import coloured_by_feeling
 from grove_tui.language.feeling_phrases import feelings_said_outright
@@ -53,7 +55,7 @@ def with_clause_passes(prompt: str, index: PlaceIndex, reading: PromptReading) -
     """The reading with the clause passes applied, in the order above."""
     groups = coloured_by_feeling(prompt, steering_clear_of_the_robot(cleared_away(crowding_round(index, pacing_between(index, reading.groups)))))
     groups = activity_place_zones(index, problem_places(prompt, index, purposed_places(index, groups)))
-    groups = its_people(prompt, index, queued_movers(index, surprised_at(prompt, carried_errands(index, leisure_places(index, broken_off(index, walked_animals(groups)))))))
+    groups = its_people(prompt, index, queued_movers(index, surprised_at(prompt, gathered_and_dropped(index, carried_errands(index, leisure_places(index, broken_off(index, walked_animals(groups))))))))
     groups = feelings_said_outright(prompt, coming_over_after_seeing(prompt, dogging_the_robot(groups)))
     groups = hiding_after_seeing(groups)  # "sees the robot and scurries off to hide": avoiding it
     groups = surprised_when_fronted(prompt, groups)  # "Startled, the temp leaps back": surprise

@@ -3,7 +3,7 @@ too the break room" means "from their desks to the break room", and the parser, 
 no route at all. Each slip is read back only where the right word fits and the sentence lacks it:
 
 - "form" as "from" and "too" as "to" right before a place phrase (a determiner or a possessive, then a
-  word the world names places by, or that word itself), when the sentence has no other "from" / "to"
+  word the world names places by, or that word itself, even misspelt: "form her ofice to the boardroom"), when the sentence has no other "from" / "to"
   and the word before is no one who could form something, and for "form" a "to" of the route follows
   ("extras form a line at X" is left as it is);
 - "there" as "their" after a preposition and right before such a place word ("from there desks"),
@@ -14,6 +14,7 @@ from __future__ import annotations
 import re
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.misspelt_name_words import misspelt_name_word
 from grove_tui.language.places import PlaceIndex
 from grove_tui.language.tokens import lemma
 
@@ -25,8 +26,10 @@ _SLIPS = {"form": "from", "too": "to"}
 
 
 def _place_word(word: str, index: PlaceIndex) -> bool:
+    """A word the world names places by, or such a word misspelt ("ofice" for "office": no English
+    word, one edit from a name word), so "form her ofice to X" is still a route."""
     low = word.lower()
-    return index.knows(low) or index.knows(lemma(low))
+    return index.knows(low) or index.knows(lemma(low)) or misspelt_name_word(low, index)
 
 
 def _place_phrase(words: list[str], j: int, index: PlaceIndex) -> bool:

@@ -50,6 +50,7 @@ from grove_tui.language.room_fixtures import fixture_of_room, fixtures_as_room
 from grove_tui.language.room_numbers import bare_room_number
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.verb_after_place import verb_before_particle
+from grove_tui.language.noun_heads import place_before_verb
 from grove_tui.language.tokens import lemma, name_tokens, phrase_lemmas, verb_lemma
 from grove_tui.language.to_things import to_a_thing_before
 
@@ -433,8 +434,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             return True
         # "in the cafeteria evacuate": the verb after the place or the building ("gift shop" is a noun)
         return verb_lemma(w) in lx.INTENT_VERBS and not s.index.knows(lemma(w)) and (
-            s.w[j].tag.startswith("VB") or s.index.match([lemma(x) for x in phrase]) is not None
-            or s.index.is_nameless([lemma(x) for x in phrase]))
+            s.w[j].tag.startswith("VB") or place_before_verb(s, phrase, j))
 
     def _confidence(self, phrase: Sequence[str], lemmas: Sequence[str],
                     match: PlaceMatch) -> tuple[float, str, tuple[str, ...]]:
