@@ -6,6 +6,7 @@ follow their teacher"), and those inside the robot's own clause ("the robot esco
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.robot_escorts import escorts_to_a_place
 from grove_tui.language.aside_movers import aside_leader
 from grove_tui.language.carried_things import collective_of_things, counted_things
 from grove_tui.language.caused_motion import moves_along, route_after
@@ -182,7 +183,7 @@ class PeopleObjects:
         word = verb_lemma(s.low[p])
         if direct and word in lx.ROBOT_FOLLOW_VERBS and word not in lx.LEADING_VERBS:
             return "followed"
-        return "led" if direct and word in lx.LEADING_VERBS else "met"
+        return "led" if direct and (word in lx.LEADING_VERBS or escorts_to_a_place(s, p)) else "met"
 
     def _verb_through_prepositions(self, head: int) -> int | None:
         """The verb a person's phrase hangs from by the parse, through a preposition of the robot's way

@@ -23,6 +23,7 @@ from grove_tui.language.place_phrases import Place, place_confidences
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.robot_asides import after_aside
 from grove_tui.language.robot_bound import bound_trip
+from grove_tui.language.robot_escorts import escorts_to_a_place
 from grove_tui.language.robot_habits import habit_task
 from grove_tui.language.robot_keeps import keeps_post
 from grove_tui.language.robot_modals import obligation_verb
@@ -268,6 +269,7 @@ class RobotClauses:
             placed = placed or keeps_post(s, rc.verb) or stays_so(s, rc.verb)  # "holds (its) position by the stairs"
             kind = "wait" if placed else self._task(verb, clause, rc.command)  # "is left in the hallway"
             kind = "cross" if kind == "wait" and shows_the_way(s, rc.verb, rc.tokens) else kind  # "shows them to gate 2"
+            kind = "cross" if kind == "follow" and escorts_to_a_place(s, rc.verb) else kind  # "accompanies her back to"
             if kind in ("cross", "wait", None) and (habit := habit_task(s, rc.verb)) is not None:
                 kind = habit  # "keeps circling the showroom floor": the habit of going round there
             if kind in ("cross", None) and to_and_fro(s, rc.verb, rc.tokens):
@@ -287,7 +289,8 @@ class RobotClauses:
             if kind == "wait" and wait_seconds is None:
                 # the clause reader's stay ("for two minutes", "for a while"): how long the robot waits there
                 wait_seconds = clause.wait_seconds
-            if kind == "cross" and rc.verb is not None and guides is None and verb in lx.LEADING_VERBS:
+            if kind == "cross" and rc.verb is not None and guides is None and (verb in lx.LEADING_VERBS or
+                                                                         escorts_to_a_place(s, rc.verb)):
                 guides = self._followed(rc.verb)  # "guides them to the exit": whom it takes along
             if kind == "follow" and rc.verb is not None and follows is None:
                 follows = self._followed(rc.verb)
