@@ -17,6 +17,8 @@ import re
 from grove_tui.language import lexicon as lx
 from grove_tui.language.chat_slips import written_out
 from grove_tui.language.places import PlaceIndex
+from grove_tui.language.informal_people import plain_people
+from grove_tui.language.possessed_items import possessed_items
 from grove_tui.language.tokens import lemma, verb_lemma
 
 # Short words of chat the lexicon's CHAT_WORDS lacks (whole words only).
@@ -40,7 +42,8 @@ _VERBS = frozenset(lx.INTENT_VERBS) | frozenset(lx.ROBOT_VERBS) | frozenset({"ha
 def spell_out(text: str) -> str:
     """The text with chat's dropped "g"s and short words written out (see the module doc)."""
     text = _DROPPED_G.sub(_with_g, text)
-    return written_out(_SHORT_WORD.sub(_short, text))  # "teh", "are muckin out" (chat_slips.py)
+    text = written_out(_SHORT_WORD.sub(_short, text))  # "teh", "are muckin out" (chat_slips.py)
+    return possessed_items(plain_people(text))  # "seven nippers" (informal_people.py); "our son in bedroom 2, ..."
 
 
 def _with_g(m: re.Match[str]) -> str:

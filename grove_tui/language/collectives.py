@@ -196,6 +196,6 @@ class Collectives:
 
 def members_named(before: Mention) -> bool:
     """Whether a mention is a collective said with no count of its own ("the school party", "the 2 pm
-    tour"), whose members a count set off by commas may name ("the school party, 25 children, ...")."""
-    return (before.collective is not None and before.label == before.collective and before.count is not None
-            and before.count.kind == "implied")
+    tour", "the night shift"), whose members a count set off by commas may name ("the school party, 25 children, ...")."""
+    return (before.collective is not None and before.count is not None and before.count.kind == "implied"
+            and (before.label == before.collective or before.label.endswith(" " + before.collective)))  # "the night shift"
