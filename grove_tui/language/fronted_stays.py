@@ -7,6 +7,7 @@ the people stay that long where they are, then do what the sentence's verb says,
 from __future__ import annotations
 
 from grove_tui.language.activity_stays import activity_stay_place
+from grove_tui.language.alone_stays import past_manner
 from grove_tui.language.counts import duration_at
 from grove_tui.language.participle_stays import participle_spot
 from grove_tui.language.sentence import Sentence
@@ -21,6 +22,7 @@ def stay_first(s: Sentence, k: int) -> tuple[float, int] | None:
     dur = duration_at(s, k + 1)
     if dur is None or dur[1] >= s.n:
         return None
+    dur = (dur[0], past_manner(s, dur[1]))  # "After five minutes alone on the bench": the place follows
     if not (s.low[dur[1]].endswith("ing") or stay_place_after(s, dur[1]) or participle_spot(s, dur[1]) is not None):
         at = activity_stay_place(s, dur[1])  # "of silent study in the quiet room": the place's preposition
         return (dur[0], at) if at is not None else None  # "stuck at the desk" above

@@ -16,6 +16,7 @@ from grove_tui.language.place_narrowing import guessed_over_named
 from grove_tui.language.place_phrases import Place
 from grove_tui.language.numbered_things import named_by_number
 from grove_tui.language.places import PlaceIndex, PlaceMatch
+from grove_tui.language.surging_across import crosses_from
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
 from grove_tui.language.worked_things import room_worked_in
 
@@ -231,6 +232,8 @@ def _through(index: PlaceIndex, p: Place, verb: str, stationary: bool, intent: s
     if is_door and (verb in lx.DEPARTURE_VERBS | lx.BOARDING_VERBS | {"evacuate"} or intent == "evacuate"):
         # "leave through the side door", "board through the jet bridge": out of the scene there
         return "destination"
+    if not is_door and crosses_from(verb, p.prep):
+        return "start"  # "commuters surge across the station hall towards the barriers": they fill it
     entry = index.entry(p.match.name) if is_door and p.match is not None else None
     if entry is not None and entry.exit and verb not in lx.ARRIVAL_VERBS:
         return "destination"  # "go home through the back door": out of an exit is where they end

@@ -22,6 +22,7 @@ from grove_tui.language.going_verbs import THING_TAKING_VERBS, carries_a_thing_t
 from grove_tui.language.leaving import LEAVING_PHRASES, LEAVING_VERBS
 from grove_tui.language.going_idioms import setting_out
 from grove_tui.language.queue_lines import lined_queue
+from grove_tui.language.run_objects import runs_a_thing
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import verb_lemma
 
@@ -85,6 +86,8 @@ def verb_intent(s: Sentence, i: int) -> str | None:
         return None  # "walk at a snail's pace", "move at a crawl": how fast, not pacing about
     if _object_noun(s, i):
         return None  # "swap a failed drive in row B": a thing worked on, no driving
+    if runs_a_thing(s, i):
+        return None  # "actors run lines in the green room": a thing done there, no running
     if v in lx.INTENT_VERBS:
         return lx.INTENT_VERBS[v]
     if v in LEAVING_VERBS or verb_lemma(s.low[i]) in LEAVING_VERBS:
