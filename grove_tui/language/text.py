@@ -28,6 +28,7 @@ from grove_tui.language.kin_counts import kin_counts
 from grove_tui.language.placing_lists import placing_lists
 from grove_tui.language.placing_verbs import placing_verbs
 from grove_tui.language.name_stops import names_unstopped
+from grove_tui.language.direction_phrases import towards_for_direction
 from grove_tui.language.lexicon import CHAT_WORDS, DURATION_UNITS, PERSON_NOUNS
 from grove_tui.language.robot_chat import robot_chat
 from grove_tui.language.robot_sent import robot_sent
@@ -103,7 +104,7 @@ def normalise(text: str) -> str:
     folded = unicodedata.normalize("NFKC", text or "")
     kept = "".join(" " if unicodedata.category(ch) in _DROPPED_CATEGORIES or _variation_selector(ch) else ch
                    for ch in folded)
-    kept = names_unstopped(kept)  # "the T. rex", "St. Mary's ward": no sentence end
+    kept = towards_for_direction(names_unstopped(kept))  # "the T. rex", "St. Mary's ward": no sentence end
     kept = robot_sent(robot_chat(some_one(chat_years(spell_out(count_words_spelt(kept))))))  # "walkin frm", "robo shd wait": chat's dropped g, short words
     kept = placing_lists(placing_verbs(kin_counts(chat_lists(chat_people(as_paired_kin(kept))))))  # "a father-and-daughter pair": "a father-daughter pair"  # "... n 3 drivers @", "Post a trio ...", "twin toddlers"
     kept = _JOINING_SIGN.sub(" and ", _PLUS_COUNT.sub(r"at least \1", _PLUS_WORD.sub(r"at least \1", _TILDE.sub("about ", kept))))
