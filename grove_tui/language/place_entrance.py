@@ -32,6 +32,15 @@ def generic_entrance(lemmas: Sequence[str], building: frozenset[str]) -> bool:
     return bool(set(words) & _SAYS_ENTRANCE) and words != ["way"] or words in (["front", "door"], ["front"])
 
 
+def named_whole(index: PlaceIndex, lemmas: Sequence[str], match: PlaceMatch | None) -> bool:
+    """Whether the words already name a place of the world by one of its own names, whole ("the front
+    stables" of a riding school, whose name's "stables" is also a building word): that place, no
+    generic way in."""
+    entry = index.entry(match.name) if match is not None and match.exact else None
+    content = tuple(t for t in lemmas if t not in ("the", "a", "an"))
+    return entry is not None and len(content) > 1 and content in entry.phrases
+
+
 def main_entrance(index: PlaceIndex, lemmas: Sequence[str], low: Sequence[str], j: int,
                   match: PlaceMatch | None = None) -> tuple[Decided, int] | None:
     """The public main entrance a generic entrance phrase (`lemmas`, ending before word j) means, and
@@ -41,7 +50,7 @@ def main_entrance(index: PlaceIndex, lemmas: Sequence[str], low: Sequence[str], 
         if j >= len(low) or low[j] != "in":
             return None
         lemmas, j = (*lemmas, "in"), j + 1
-    if not generic_entrance(lemmas, index.building_words):
+    if not generic_entrance(lemmas, index.building_words) or named_whole(index, lemmas, match):
         return None
     door = _main_door(index)
     if door is None or (match is not None and _public_way_in(index, match, bool(set(lemmas) & _DOOR))):
