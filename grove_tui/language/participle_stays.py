@@ -33,6 +33,8 @@ def participle_spot(s: Sentence, k: int) -> int | None:
         if j + 1 < s.n and stay_place_after(s, j + 1):
             return j + 1  # "hanging about near the gate"
         return j if _place_follows(s, j) else None
+    if j < s.n and s.low[j] == "from" and _place_follows(s, j):
+        return j  # "watching from the viewing window": where they watched from, that spot itself
     return j if j < s.n and stay_place_after(s, j) else None
 
 
