@@ -30,7 +30,6 @@ from grove_tui.language.place_of_zone import served_at
 from grove_tui.language.place_first_words import names_its_zone
 from grove_tui.language.place_head_clauses import fixture_named_by_head, head_described, room_named_by_head
 from grove_tui.language.place_other_kinds import kind_agrees
-from grove_tui.language.plural_names import singular_near_plural
 from grove_tui.language.places import MeaningMatch, PlaceMatch, owner_kinds
 from grove_tui.language.place_where_things import where_things_are
 from grove_tui.language.where_rooms import other_room_saying_it, room_doing_where
@@ -190,8 +189,6 @@ class PlaceMeaning:
         meant = self._by_meaning(phrase, lemmas, accept=MEANING_RESCUE, margin=MEANING_RESCUE_MARGIN)
         if meant is None and list(lemmas) != [w for w in phrase if w not in lx.DETERMINERS]:
             meant = self._by_meaning(lemmas, lemmas, accept=MEANING_RESCUE, margin=MEANING_RESCUE_MARGIN)
-        if meant is not None and singular_near_plural(self.s.index, phrase, meant[0].name):
-            return None  # "the supermarket" is one shop the world lacks, not "the shops"
         return None if meant is not None and only_modifier_shared(self.s.index, lemmas, meant[0].name) else meant
 
     def _described(self, phrase: Sequence[str], lemmas: Sequence[str], j: int,
