@@ -3,7 +3,8 @@ field", "a farmer leads two heifers into the barn". The parse makes the led one 
 leader; an animal is nobody a crowd simulation places, so that group goes. Whether the led one is an animal
 is read by kind, not by a list of breeds: a noun no list of people names whose meaning (the embedding
 model of meaning.py) is much nearer "an animal" than "a person" ("collie", "spaniel", "pony", "ferret").
-Without the model only the lexicon's list of animals decides.
+Without the model only the lexicon's list of animals decides, for a word with no hyphen (a
+"first-timer" ends in a timer).
 """
 
 from __future__ import annotations
@@ -46,12 +47,10 @@ def is_animal(label: str) -> bool:
     head = lemma(words[-1])
     if head in lx.PERSON_NOUNS or words[-1] in lx.PERSON_NOUNS:
         return False
-    if head in lx.NON_PEOPLE:
-        return True
     model = MiniLM.shared()
     if model is None:
-        return False
-    vectors = model.encode([f"a {head}", "an animal", "a person"])
+        return "-" not in words[-1] and head in lx.NON_PEOPLE  # not "first-timer", whose end is a timer
+    vectors = model.encode([f"a {words[-1]}", "an animal", "a person"])
     vectors = vectors / np.linalg.norm(vectors, axis=1, keepdims=True)
     to_animal, to_person = float(vectors[0] @ vectors[1]), float(vectors[0] @ vectors[2])
     return to_animal - to_person >= _ANIMAL_MARGIN
