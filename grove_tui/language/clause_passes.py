@@ -9,6 +9,7 @@ what people do or where, which the clause reader leaves to them:
   (activity_place_zones.py); a kind of place searched for that the world lacks, refused
   (searched_unknown.py), or a room searched for by a name the world lacks (the same);
 - breaking off to do something at a place ("break off to restock from the shelving": broken_off.py);
+  an animal led along, no person (led_animals.py);
   walking an animal in a place, wandering there ("walking dogs in the paddock": walked_animals.py);
 - a purpose with its place said after going off ("for a cuppa in the canteen": leisure_places.py); an
   errand with a thing carried from one place to another (carried_errands.py), or gathered at one and
@@ -49,13 +50,14 @@ from grove_tui.language.stepped_aside import stepped_aside_in_place
 from grove_tui.language.steered_clear import steering_clear_of_the_robot
 from grove_tui.language.surprised_at import occasions, surprised_at
 from grove_tui.language.walked_animals import walked_animals
+from grove_tui.language.led_animals import led_animals
 
 
 def with_clause_passes(prompt: str, index: PlaceIndex, reading: PromptReading) -> PromptReading:
     """The reading with the clause passes applied, in the order above."""
     groups = coloured_by_feeling(prompt, steering_clear_of_the_robot(cleared_away(crowding_round(index, pacing_between(index, reading.groups)))))
     groups = activity_place_zones(index, problem_places(prompt, index, purposed_places(index, groups)))
-    groups = its_people(prompt, index, queued_movers(index, surprised_at(prompt, gathered_and_dropped(index, carried_errands(index, leisure_places(index, broken_off(index, walked_animals(groups))))))))
+    groups = its_people(prompt, index, queued_movers(index, surprised_at(prompt, gathered_and_dropped(index, carried_errands(index, leisure_places(index, broken_off(index, walked_animals(led_animals(groups)))))))))
     groups = feelings_said_outright(prompt, coming_over_after_seeing(prompt, dogging_the_robot(groups)))
     groups = hiding_after_seeing(groups)  # "sees the robot and scurries off to hide": avoiding it
     groups = surprised_when_fronted(prompt, groups)  # "Startled, the temp leaps back": surprise

@@ -165,6 +165,7 @@ from grove_tui.language.got_up import got_up_and_went
 from grove_tui.language.clause_passes import with_clause_passes
 from grove_tui.language.counted_chat_waits import as_counted_chat_wait
 from grove_tui.language.listed_chat_waits import as_listed_chat_wait
+from grove_tui.language.chat_meetings import with_chat_meetings
 from grove_tui.language.chat_fragments import chat_fragments, with_counted_from
 from grove_tui.language.chat_school_years import with_school_year_pupils
 from grove_tui.language.chat_joined_ing import with_joined_ing_items
@@ -198,7 +199,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = as_robot_order(with_robot_aliases(without_robot_words_in_place_names(text, index)))  # "to the robot lab": the robotics lab, no robot; "... sidesteps the machine": the robot; "Robot job: take X to Y": "Have the robot take X to Y"
     text = with_robot_followers(with_robot_in_tow(text))  # "With a nurse in tow, the robot ...", "Followed by a nurse, the robot ...": the nurse follows the robot
     text = as_chat_wait(with_school_year_pupils(text))  # "12 yr7s in X": "12 year 7 pupils in X"; "guard @ cashpoint 2 mins then off to X": a wait, then the walk
-    text = with_scattered_counts(with_joined_ing_items(with_counted_from(chat_fragments(as_listed_chat_wait(text)))))  # "the two from the chess club": two people; "3 from sales gossiping", "... @ desk, 10 mins then out"
+    text = with_scattered_counts(with_joined_ing_items(with_counted_from(chat_fragments(as_listed_chat_wait(with_chat_meetings(text))))))  # "boardroom mtg 9 ppl": 9 people meeting in it; "the two from the chess club": two people; "3 from sales gossiping", "... @ desk, 10 mins then out"
     text = as_counted_chat_wait(text)  # "3 ppl lookin at cacti 2 mins then off to tills": the same, counted
     text = with_misspelt_verbs(text, index)  # "infants from the school trapse across": "traipse", no "school trapse"
     text = with_homophone_slips(chat_to(text, index), index)  # "form there desks too the kitchen": from their desks to it; "from the staff office 2 bay 4": chat's "to" before a place
