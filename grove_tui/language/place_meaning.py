@@ -32,6 +32,7 @@ from grove_tui.language.place_head_clauses import fixture_named_by_head, head_de
 from grove_tui.language.place_other_kinds import kind_agrees
 from grove_tui.language.places import MeaningMatch, PlaceMatch, owner_kinds
 from grove_tui.language.place_where_things import where_things_are
+from grove_tui.language.where_served import room_of_used_fixture
 from grove_tui.language.where_rooms import other_room_saying_it, room_doing_where
 from grove_tui.language.user_kinds import USER_KINDS
 from grove_tui.language.sentence import IDENTIFIER, Sentence
@@ -270,7 +271,7 @@ class PlaceMeaning:
         if meant is None:
             return None
         meant = room_doing_where(self.s.index, activity, room_of_listed(self.s, self.people, first, end, meant))
-        return other_room_saying_it(self.s.index, activity, meant), end
+        return room_of_used_fixture(self.s.index, other_room_saying_it(self.s.index, activity, meant)), end
 
     def _active(self, first: int, end: int) -> str:
         """The clause's words, a passive said as what people do there: "the old maps are kept" is "you keep

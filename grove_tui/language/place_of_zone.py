@@ -12,6 +12,7 @@ from grove_tui.language.owned_doors import door_of_owner
 from grove_tui.language.places import MeaningMatch, PlaceIndex, PlaceMatch
 from grove_tui.language.room_word_things import exit_of_room, own_word_thing, room_by_first_words, thing_said_inside
 from grove_tui.language.room_word_things import exit_of_room_said as exit_of_room_said
+from grove_tui.language.whole_names import said_whole
 from grove_tui.language.tokens import lemma, phrase_lemmas
 
 
@@ -51,7 +52,7 @@ def zone_then_thing(index: PlaceIndex, lemmas: Sequence[str], match: PlaceMatch 
     """"the robing room table", "the restaurant counter": a room's whole name right before a kind of
     thing the room has (not a word of the room's own name) is that thing of the room, unless the
     phrase names a thing of its own that carries the room's word ("the court 1 bench")."""
-    if len(lemmas) < 2:
+    if len(lemmas) < 2 or said_whole(index, lemmas):
         return None
     head = lemmas[-1]
     before = tuple(lemmas[:-1])
