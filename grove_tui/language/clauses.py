@@ -40,6 +40,7 @@ from grove_tui.language.refused_destinations import refused_destination_after
 from grove_tui.language.place_phrases import Place, PlacePhrases
 from grove_tui.language.place_topics import topic_mark_at
 from grove_tui.language.reactions import clause_reaction
+from grove_tui.language.ridden_stays import ridden_for_a_while
 from grove_tui.language.numbered_names import numbered_kind, numbered_name
 from grove_tui.language.moved_things import moved_along
 from grove_tui.language.contents_of import contents_of_thing
@@ -412,11 +413,12 @@ class Clauses(ClauseCues):
                 c.places.append(place)
                 c.has_action = True  # a verb of its own, though no list names it: no sharing the next group's
                 scan.used.update(range(i, place.end))
-        elif not s.after_determiner(i) and v in lx.OBJECT_VERBS and nxt not in ("round", "around"):  # a preposition
+        elif not s.after_determiner(i) and (v in lx.OBJECT_VERBS or ridden_for_a_while(s, v, obj)) and nxt not in (
+                "round", "around"):  # a preposition; "rides the street course for an hour": there (ridden_stays.py)
             if nxt in lx.DETERMINERS or (nxt and (s.index.knows(lemma(nxt)) or self.places.names_place(obj))):
                 role = ("obj:start" if v in lx.START_OBJECT_VERBS else "obj:via" if v in lx.VIA_OBJECT_VERBS
                         else "obj:seen" if v in lx.SEEN_OBJECT_VERBS
-                        else "obj:at" if v in lx.LOCATION_OBJECT_VERBS else "obj:dest")
+                        else "obj:at" if v in lx.LOCATION_OBJECT_VERBS or v not in lx.OBJECT_VERBS else "obj:dest")
                 # What people watch is mostly a thing ("the news"), and so is what they clean where a
                 # place follows ("cleans the windows in the hallway"): a place only when the world has it.
                 end = s.phrase_end(obj)

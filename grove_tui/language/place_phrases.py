@@ -49,7 +49,7 @@ from grove_tui.language.other_possessors import other_of_kind, setting_words
 from grove_tui.language.room_fixtures import fixture_of_room, fixtures_as_room
 from grove_tui.language.room_numbers import bare_room_number
 from grove_tui.language.sentence import IDENTIFIER, Sentence
-from grove_tui.language.verb_after_place import verb_before_particle
+from grove_tui.language.verb_after_place import verb_after_place
 from grove_tui.language.noun_heads import place_before_verb
 from grove_tui.language.tokens import lemma, name_tokens, phrase_lemmas, verb_lemma
 from grove_tui.language.to_things import to_a_thing_before
@@ -348,7 +348,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             if w in lx.PLACE_PREPOSITIONS and not joined and not (phrase and s.index.knows(lemma(w))):
                 break
             after_hyphen, joined = joined, False
-            if phrase and not after_hyphen and (self._verb_ends_name(phrase, j) or verb_before_particle(s, j)):
+            if phrase and not after_hyphen and (self._verb_ends_name(phrase, j) or verb_after_place(s, phrase, j, self.whole_name)):
                 break  # "key-cutting kiosk": one name; "the knife-skills course sidles away": a verb
             if phrase and w in lx.DETERMINERS and j + 1 < s.n and s.w[j + 1].pos in ("NOUN", "PROPN", "ADJ", "NUM") \
                     and not self._extends_name(phrase, j) and not self.whole_name([*phrase, w]):

@@ -5,6 +5,9 @@ not the last word of the place's name (place_phrases.py `_words`)."""
 
 from __future__ import annotations
 
+from collections.abc import Callable, Sequence
+
+from grove_tui.language.heading_verbs import heading_verb_after
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import lemma
 
@@ -16,3 +19,9 @@ def verb_before_particle(s: Sentence, j: int) -> bool:
     w = s.low[j]
     return w.endswith("s") and not w.endswith("ss") and lemma(w) != w and j + 1 < s.n and \
         s.low[j + 1] in _GOING_PARTICLES and not s.index.knows(lemma(w)) and not s.index.knows(w)
+
+
+def verb_after_place(s: Sentence, phrase: Sequence[str], j: int, whole_name: Callable[[Sequence[str]], bool]) -> bool:
+    """Whether the word at j after a place phrase is the subject's verb: one in "-s" before a particle of
+    going (module doc), or a base-form verb of heading off (heading_verbs.py)."""
+    return verb_before_particle(s, j) or heading_verb_after(s, phrase, j, whole_name)
