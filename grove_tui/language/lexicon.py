@@ -287,7 +287,7 @@ for _intent, _verbs in {
     "converse": "chat talk converse gossip discuss socialise socialize meet greet argue debate natter chatter banter "
                 "bicker squabble quarrel wrangle murmur whisper mutter confer",
     "wander": "wander stroll roam browse meander mill amble saunter explore shop patrol drift pace crawl potter "
-              "mop sweep vacuum hoover scrub tidy clean tour rummage prowl dawdle",
+              "mop sweep vacuum hoover scrub tidy clean tour rummage prowl dawdle float bob paddle wade",
     "follow": "follow accompany escort trail shadow",
     "evacuate": "evacuate flee escape",
     "walk": "walk go head move come leave enter cross arrive proceed return visit pass exit commute travel "
