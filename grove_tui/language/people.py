@@ -6,6 +6,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.joined_names import joined_first_name
 from grove_tui.language.time_phrases import time_phrase_end
 from grove_tui.language.timer_people import timer_person
 from grove_tui.language.hazard_subjects import hazard_verb, hazard_word
@@ -125,7 +126,7 @@ class People:
             return True  # "two wheelchairs roll to ...": a wheelchair user each, though the world has wheelchairs
         if s.w[i].pos in ("NOUN", "PROPN", "ADJ") and compound_person(lem):
             return True  # "the lifeguard", though the world names a lifeguard's chair
-        if suffix_role(s, i) or coordinated_role(s, i) or apposed_name(s, i):  # "our guide Priya strolls": Priya
+        if suffix_role(s, i) or coordinated_role(s, i) or apposed_name(s, i) or joined_first_name(s, i):  # "our guide Priya strolls": Priya
             return True  # "both quiz contestants leave", "a greeter by the leaflet stand", "the drummer and bassist haul"
         if self._subject_of_a_human_verb(i) or chore_subject(s, i) or self._agent_subject(i) or self._agent_going(i) or \
                 self._reflexive_agent(i) or unlisted_subject(s, i) or unlisted_escorted(s, i) or \

@@ -10,6 +10,7 @@ from grove_tui.language.counts import quantifier
 from grove_tui.language.people import People
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.verbless_pairs import second_of_a_placed_pair
+from grove_tui.language.joined_names import joined_first_name
 
 
 def whole_zone_pronoun(s: Sentence, at: int) -> bool:
@@ -39,8 +40,8 @@ def companions(s: Sentence, people: People, with_at: int) -> bool:
 def coordinated_person(s: Sentence, people: People, head: int) -> bool:
     """Whether a person word is joined by "and" to another person phrase ("Mum and two kids
     walk", "Mum and Dad chat"): the first of two subjects, though no verb follows it."""
-    if second_of_a_placed_pair(s, people, head):
-        return True  # "Mum and Dad at the table": the second of the two, with no verb either
+    if second_of_a_placed_pair(s, people, head) or joined_first_name(s, head):
+        return True  # "Mum and Dad at the table": the second of the two, with no verb either; "Priya, Tom and Alice chat"
     if head + 2 >= s.n or s.low[head + 1] != "and":
         return False
     q = quantifier(s, head + 2)
