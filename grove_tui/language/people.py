@@ -6,6 +6,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.one_name import one_name
 from grove_tui.language.joined_names import joined_first_name
 from grove_tui.language.time_phrases import time_phrase_end
 from grove_tui.language.timer_people import timer_person
@@ -575,7 +576,7 @@ class People:
         if head > 0 and s.low[head - 1] in CHILD_NAME_WORDS and s.w[head].tag == "NNP" and \
                 s.lemma(head) not in lx.PERSON_NOUNS:
             return "child"  # "Little Tom": a child, by name
-        noun = abbreviation_label(s, head) or s.lemma(head)  # "two TAs": ta
+        noun = abbreviation_label(s, head) or (s.low[head] if one_name(s, head) else s.lemma(head))  # "two TAs": ta; "Agnes"
         if head >= 2 and s.low[head - 1] == "-" and modifier_end(s, head - 2) == head and s.w[head - 2].pos != "ADJ":
             return f"{s.low[head - 2]}-{noun}"  # "the co-pilot": another person than "the pilot"
         if noun not in lx.PERSON_NOUNS and len(s.low[head]) >= 6 and not known_word(s.low[head]):
