@@ -20,6 +20,7 @@ from grove_tui.language.gathering_verbs import as_gathering_verbs
 from grove_tui.language.plural_gathering_verbs import as_plural_gathering_verbs
 from grove_tui.language.gerund_verbs import as_verbs_before_gerunds
 from grove_tui.language.leading_verb_tags import as_leading_verbs
+from grove_tui.language.modal_names import as_modal_names
 from grove_tui.language.counted_takers import as_counted_takers
 from grove_tui.language.later_verbs import as_later_verbs
 from grove_tui.language.parser import Word
@@ -136,7 +137,7 @@ def as_singular_verbs(words: list[Word]) -> list[Word]:
     """The parse with the verb of one person, taken for a plural noun, tagged a verb (module doc)."""
     # "4 duck into": a verb; "A pair of orderlies wheel Mr Ahmed", "A porter wheels frail Mrs Patel": the verb
     words = with_listed_subjects(as_verbs_before_gerunds(words))  # "the junior captain practises chipping": a verb; "A steward hovers near ...": "steward" read an adverb
-    words = as_leading_verbs(as_listed_verbs(as_counted_verbs(as_counted_takers(as_object_verbs(words)))))  # "my mum irons shirts"
+    words = as_leading_verbs(as_listed_verbs(as_counted_verbs(as_counted_takers(as_object_verbs(as_modal_names(words))))))  # "my mum irons shirts"
     out = prepositions_as_such(as_plural_verbs_before_a_clause(as_counted_modifiers(words)))  # "a timid lad beside gate B1": "beside" tagged a noun
     for k, w in enumerate(words):
         after_phrase = subject_of(out, k) if not _taken_for_noun(out, k) else None

@@ -10,6 +10,7 @@ from functools import lru_cache
 from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.modal_names import MODAL_NAMES
 from grove_tui.language.and_a_person import hanging_about, joined_lone_subject
 from grove_tui.language.aspect_verbs import governed_verb
 from grove_tui.language.hazard_subjects import hazard_verb
@@ -55,7 +56,7 @@ def going_by_way(s: Sentence, v: int) -> bool:
 def _a_thing(s: Sentence, lem: str) -> bool:
     return (names_a_place(s.index, lem) or lem in lx.ROBOT_WORDS or lem in lx.NON_PLACES or lem in lx.NON_PEOPLE
             or lem in lx.BUILDING_WORDS or lem in lx.DURATION_UNITS or lem in lx.HAZARD_NOUNS
-            or lem in lx.IMPLIED_RANGES or lem in lx.STOPWORDS or lem in lx.COMPOUND_THINGS or lem in lx.PERSON_THINGS
+            or lem in lx.IMPLIED_RANGES or lem in lx.STOPWORDS - MODAL_NAMES or lem in lx.COMPOUND_THINGS or lem in lx.PERSON_THINGS
             or weather_noun(lem))  # "the wind rips the side of the tent": weather, nobody
 
 
