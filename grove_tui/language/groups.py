@@ -42,6 +42,7 @@ from grove_tui.language.there_stays import stayed_there
 from grove_tui.language.thing_modifiers import modifies_a_thing
 from grove_tui.language.tokens import phrase_lemmas, verb_lemma
 from grove_tui.language.wait_first import wait_before_queuing
+from grove_tui.language.waits_until import waited_until
 from grove_tui.language.possessive_owners import clause_owner
 from grove_tui.language.zone_pairs import everyone_in_the_second_zone
 
@@ -384,7 +385,7 @@ class Groups:
         wait = c.wait_seconds
         if wait is None and scene is not None and (intent in lx.STATIONARY_INTENTS or sentence_stay(s, m.first)):
             wait = scene.wait_seconds
-        if intent == "wait" and wait and location and destination and start is None:
+        if intent == "wait" and (wait or waited_until(s, span)) and location and destination and start is None:
             start = location  # "waits at the kiosk for 10 minutes, then heads to the shop": it sets off from there
         first_wait = wait_before_queuing(s, span, c.verb_index) if wait and intent == "queue" else None
         if first_wait is not None and start is None:  # "queue after waiting in the food court for a minute": there first

@@ -15,6 +15,7 @@ from grove_tui.language.and_verbs import as_second_verbs
 from grove_tui.language.counted_verbs import as_counted_verbs
 from grove_tui.language.listed_verbs import as_listed_verbs
 from grove_tui.language.object_verbs import as_object_verbs
+from grove_tui.language.order_fronts import without_order_words
 from grove_tui.language.counted_modifiers import as_counted_modifiers, as_plural_verbs_before_a_clause
 from grove_tui.language.gathering_verbs import as_gathering_verbs
 from grove_tui.language.plural_gathering_verbs import as_plural_gathering_verbs
@@ -120,7 +121,7 @@ def _taken_for_noun(words: list[Word], k: int) -> bool:
         return False
     if _described_people(words, k):
         return False
-    before = _after_a_fronted_clause(words, k)
+    before = without_order_words(_after_a_fronted_clause(words, k))  # "First a man shops in X"
     if not before or any(x.pos not in _SUBJECT_WORDS and x.tag != "POS" for x in before):  # "the porter's pal"
         return False  # a verb before it: "they wait by the taxi ranks"
     if any(x.tag in ("NNS", "NNPS") or (x.pos == "NUM" and x.lower != "one") for x in before):
@@ -156,7 +157,7 @@ def as_singular_verbs(words: list[Word]) -> list[Word]:
             continue  # "Sam, our toddler, waddles": the parser found the subject
         prev = out[k - 1]
         if root == k or (root > k and (words[root].pos not in ("VERB", "AUX")
-                                       or any(x.pos == "SCONJ" for x in out[k + 1:root]))):
+                                       or any(x.pos == "SCONJ" or x.lower in (";", "then") for x in out[k + 1:root]))):
             # "a care assistant ambles", "... nips over because her pass needs ...": the noun before
             for j in range(k - 1):
                 if out[j].head == k and out[j].sentence == w.sentence:
