@@ -33,6 +33,8 @@ from grove_tui.language.lexicon import CHAT_WORDS, DURATION_UNITS, PERSON_NOUNS
 from grove_tui.language.robot_chat import robot_chat
 from grove_tui.language.robot_sent import robot_sent
 from grove_tui.language.study_years import year_of_people
+from grove_tui.language.where_commas import where_commas
+from grove_tui.language.kept_away import kept_away
 from grove_tui.language.tokens import lemma
 
 # Unicode categories that never carry a word: other symbols (emoji, pictographs), modifier symbols
@@ -120,6 +122,7 @@ def normalise(text: str) -> str:
     kept = _OF_THIS_PLACE.sub("", _A_SIDE.sub(r"\1aside", kept))
     kept = _YEAR_PERSON.sub(lambda m: m.group(0) if year_of_people(kept, m.end()) else f"{m.group(1)} year student{m.group(2)}", kept)  # "third-year law students"
     kept = _ROUNDS.sub(lambda m: _PATROL_FORMS[m.group(1).split()[0].lower()], kept)
+    kept = kept_away(where_commas(kept))  # "keeping away from the kitchen": avoiding it; "the boardroom where eight people are": the people a group of their own
     return " ".join(bare_items(kept).split())  # "..., intern at printer": one person, an item of its own
 
 
