@@ -7,6 +7,7 @@ place is still found and the robot is not heard."""
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.places import PlaceIndex
@@ -16,7 +17,8 @@ def _has_robot_word(words: tuple[str, ...]) -> bool:
     return any(w in lx.ROBOT_WORDS for w in words)
 
 
-def _renamings(index: PlaceIndex) -> list[tuple[re.Pattern[str], str]]:
+@lru_cache(maxsize=64)  # one index per world, built once: its renamings too, not on every reading
+def _renamings(index: PlaceIndex) -> tuple[tuple[re.Pattern[str], str], ...]:
     """(the robot-worded name as typed, another name of the same place) for each place that has both,
     longest names first so that "robot lab annex" is renamed before "robot lab"."""
     out: list[tuple[int, re.Pattern[str], str]] = []
@@ -31,7 +33,7 @@ def _renamings(index: PlaceIndex) -> list[tuple[re.Pattern[str], str]]:
             pattern = r"(?<![\w-])" + r"[\s-]+".join(re.escape(w) for w in words) + r"(?=s?\b)(?!['’]s)"
             out.append((len(words), re.compile(pattern, re.IGNORECASE), other))
     out.sort(key=lambda item: -item[0])
-    return [(pattern, other) for _, pattern, other in out]
+    return tuple((pattern, other) for _, pattern, other in out)
 
 
 def without_robot_words_in_place_names(text: str, index: PlaceIndex) -> str:
