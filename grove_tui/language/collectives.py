@@ -9,6 +9,7 @@ from dataclasses import replace
 from grove_tui.language import lexicon as lx
 from grove_tui.language.held_collectives import held_not_people
 from grove_tui.language.count_alone import people_by_place
+from grove_tui.language.plural_surnames import plural_surname
 from grove_tui.language.counts import Quantifier, count_of, number_at, quantifier
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
@@ -69,6 +70,10 @@ class Collectives:
     def collective(self, head: int, number: Quantifier | None = None, first: int | None = None) -> Mention | None:
         """Mentions built on a collective noun: "a family", "two families of three", "a group of nurses"."""
         s = self.s
+        if number is None and first is None and plural_surname(s, head):  # "the Smiths": one family, said by its name
+            return Mention(head - 1, head, s.span(head - 1, head), "family",
+                           self._collective_count("family", "family", None, 1, True, True, head), together=True,
+                           collective="family")
         noun = s.lemma(head)
         if noun not in lx.IMPLIED_RANGES or (self.people.multiword_end(head) and noun not in lx.MULTIWORD_COLLECTIVES):
             return None  # "the au pair" is no pair; "the cabin crew" is a crew

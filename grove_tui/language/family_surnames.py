@@ -1,11 +1,12 @@
-"""A family said by its surname in the plural ("the Hendersons", "the Okafors"): a count set off by
-commas after it ("The Hendersons, a family of five, wander ...", "the Lees, four of them, ...") says
-how many the family is and who they are, so it is one group, not the surname's people and a second
-family beside them."""
+"""A family said by its surname in the plural ("the Hendersons", "the Okafors": plural_surnames.py): a
+count set off by commas after it ("The Hendersons, a family of five, wander ...", "the Lees, four of
+them, ...") says how many the family is and who they are, so it is one group, not the surname's people
+and a second family beside them."""
 
 from __future__ import annotations
 
 from grove_tui.language.apposed_counts import class_named
+from grove_tui.language.plural_surnames import plural_surname
 from grove_tui.language.mention import Mention
 from grove_tui.language.sentence import Sentence
 

@@ -144,6 +144,18 @@ def dictionary_word(word: str) -> bool:
 
 def parse(text: str) -> list[Word]:
     """The words of `text` with their tags and roles, in order (`Word.i` is the index in the list)."""
+    return list(_parsed(text))  # a list of its own: passes rewrite words in place
+
+
+def clear_parses() -> None:
+    """Forget the parses kept (benchmarks time a reading of a text never parsed before)."""
+    _parsed.cache_clear()
+
+
+# A reading parses its text, rewrites of it and helper phrases in turn ("They {verb} in it."), and the text
+# with a comma was parsed twice (a first look for listed describing words): about 13 ms each time.
+@lru_cache(maxsize=64)
+def _parsed(text: str) -> tuple[Word, ...]:
     nlp = load()
     # One BLAS thread: the pipeline's matrices are small, and on a busy 2-core machine a second
     # thread only waits for the core (measured: 24 ms -> 15 ms per prompt at load average 11).
@@ -153,5 +165,5 @@ def parse(text: str) -> list[Word]:
     for k, sent in enumerate(doc.sents):
         for token in sent:
             sentence_of[token.i] = k
-    return [Word(t.i, t.text, t.text.lower(), t.lemma_.lower(), t.pos_, t.tag_, t.dep_, t.head.i,
-                 sentence_of.get(t.i, 0), t.idx, t.idx + len(t.text)) for t in doc]
+    return tuple(Word(t.i, t.text, t.text.lower(), t.lemma_.lower(), t.pos_, t.tag_, t.dep_, t.head.i,
+                      sentence_of.get(t.i, 0), t.idx, t.idx + len(t.text)) for t in doc)

@@ -7,6 +7,7 @@ from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.one_name import one_name
+from grove_tui.language.plural_surnames import plural_surname
 from grove_tui.language.joined_names import joined_first_name
 from grove_tui.language.time_phrases import time_phrase_end
 from grove_tui.language.timer_people import timer_person
@@ -115,7 +116,7 @@ class People:
             return False  # "the robot stands guard at the door": a duty, nobody
         if lem in lx.PERSON_NOUNS or s.low[i] in lx.PERSON_NOUNS or self.multiword_end(i) or adjective_person(s, i):
             return True  # "a drunk kicks the robot": an adjective standing for a person
-        if abbreviated_role(s, i) or family_member(s, i) or plural_adjective_people(s, i):
+        if abbreviated_role(s, i) or family_member(s, i) or plural_adjective_people(s, i) or plural_surname(s, i):
             return True  # "the GP waits", "our youngest edges away"
         if compound_head_person(s, i) or head_person(s, i) or agent_compound(s, i):
             return True  # "two team leaders", "the head goes back to her office", "three shelf stackers"

@@ -52,6 +52,7 @@ _IE_NOUNS = frozenset("selfie zombie movie cookie hippie rookie goalie techie ne
                       "groupie yuppie smoothie".split())
 
 
+@lru_cache(maxsize=8192)  # a reading asks for some two thousand lemmas of a few dozen words
 def lemma(word: str) -> str:
     """Plural nouns to singular by rule; enough to match "nurses" to "nurse" and "pharmacies" to "pharmacy"."""
     w = word.lower()

@@ -57,6 +57,11 @@ MORE_PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
 # Leaving phrases first: "make a run for it" is a whole phrase before the lexicon's "make a run".
 PHRASAL_INTENTS: dict[tuple[str, ...], str] = {**LEAVING_PHRASES, **lx.PHRASAL_INTENTS, **MORE_PHRASAL_INTENTS,
                                               **ACTIVITY_PHRASES}  # nouns of activity: "have a natter"
+# The phrases by their first word, each list in PHRASAL_INTENTS's order (its order decides between
+# phrases that start alike): a reading looks up a verb's few phrases, not all two thousand.
+_PHRASES_BY_FIRST: dict[str, list[tuple[int, tuple[str, ...], str]]] = {}
+for _order, (_phrase, _intent) in enumerate(PHRASAL_INTENTS.items()):
+    _PHRASES_BY_FIRST.setdefault(_phrase[0], []).append((_order, _phrase, _intent))
 _AROUND = frozenset({"around", "about", "round"})
 # Words after "round" that say where to: "round to the bar", "round into the yard".
 _ON_TO = frozenset({"to", "into", "towards", "toward", "onto"})
@@ -105,8 +110,8 @@ def verb_intent(s: Sentence, i: int) -> str | None:
 def phrasal_intent(s: Sentence, i: int) -> tuple[tuple[str, ...], str] | None:
     """The phrasal verb starting at i and its intent ("line up", "do laps", "stretches her legs")."""
     first = {verb_lemma(s.low[i]), s.verb(i)}
-    for phrase, intent in PHRASAL_INTENTS.items():
-        if phrase[0] in first and tuple(s.low[i + 1:i + len(phrase)]) == phrase[1:]:
+    for _, phrase, intent in sorted(p for word in first for p in _PHRASES_BY_FIRST.get(word, ())):
+        if tuple(s.low[i + 1:i + len(phrase)]) == phrase[1:]:
             if phrase[0] in THING_TAKING_VERBS and carries_a_thing_to(s, i):
                 return None  # "takes her lunch to the lounge": going there with it, not a lunch break
             if phrase[-1] in _AROUND and i + len(phrase) < s.n and s.low[i + len(phrase)] in _ON_TO:
