@@ -3,12 +3,22 @@
 a "with" phrase describing the first ("a boy with a broken arm and his mum wait at ..."). The small
 parser reads the participle as the first person's own verb and the "with" phrase as the end of the
 first subject, so the main verb after the second person would be the second's only; both share it.
+And people joined by "and" before those who move someone ("A doctor and two nurses wheel a patient
+from ward A to radiology") go the moved person's way too (share_with_joined_movers).
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable, Sequence
+from dataclasses import replace
+from typing import TYPE_CHECKING
+
 from grove_tui.language.people import People
 from grove_tui.language.sentence import Sentence
+
+if TYPE_CHECKING:
+    from grove_tui.language.clauses import Clause
+    from grove_tui.language.mention import Mention
 
 # Participles saying who goes along with the person before them ("flanked by", "escorted by"): the
 # people after "by" go the same way as that person.
@@ -43,3 +53,15 @@ def attribute_end(s: Sentence, people: People, person: int) -> int:
     if k >= s.n or s.low[k] != "and" or k == person + 2:
         return person
     return k - 1
+
+
+def share_with_joined_movers(s: Sentence, mentions: Sequence[Mention], clauses: list[Clause],
+                             led_by: Callable[[int], bool]) -> None:
+    """"A doctor and two nurses wheel a patient from ward A to radiology": the movers are given the
+    route the moved person is said to take only after the first of them shared their clause without it
+    (groups.py), so the doctor stood still; whoever is joined to the movers by "and" takes it too."""
+    for k in range(len(mentions) - 3, -1, -1):
+        words = [s.low[x] for x in range(mentions[k].last + 1, mentions[k + 1].first) if s.low[x] != ","]
+        if words == ["and"] and led_by(mentions[k + 2].first) and not clauses[k].places and clauses[k + 1].places \
+                and mentions[k + 1].relation is None and s.w[mentions[k].first].sentence == s.w[mentions[k + 2].first].sentence:
+            clauses[k] = replace(clauses[k + 1])

@@ -18,7 +18,7 @@ from grove_tui.language.called_in import called_in_to
 from grove_tui.language.carried_moves import moves_at
 from grove_tui.language.robot_journey import journey_words
 from grove_tui.language.clauses import Clause, Clauses
-from grove_tui.language.escorted import attribute_end, company_between
+from grove_tui.language.escorted import attribute_end, company_between, share_with_joined_movers
 from grove_tui.language.fronted_stays import sentence_stay, stayed_spots
 from grove_tui.language.later_stops import later_words
 from grove_tui.language.group_counts import count_confidence, settle_count
@@ -49,8 +49,7 @@ from grove_tui.language.zone_pairs import everyone_in_the_second_zone
 _FOLLOWED_BY = ("followed", "trailed", "accompanied", "joined")
 # Words after an existential "there" ("there are ten people"), which points at no place.
 _EXISTENTIAL = frozenset("is are was were 's be will must may might seems seem has have".split())
-# Prepositions that send people somewhere with no verb of motion ("... to the exit"); "inside" is where they are.
-_SENDING = (lx.DESTINATION_PREPOSITIONS | lx.VIA_PREPOSITIONS) - {"inside"}
+_SENDING = (lx.DESTINATION_PREPOSITIONS | lx.VIA_PREPOSITIONS) - {"inside"}  # sent with no verb of motion ("to the exit")
 
 
 @dataclass
@@ -256,6 +255,7 @@ class Groups:
                 around = any(p.prep in ("around", "about", "round") for p in places)  # "shows them around the hall"
                 clauses[k - 1] = replace(clauses[k], places=places, has_action=True, intent=clauses[k].intent or (
                     "walk" if routed else "wander" if around else "wait"))
+        share_with_joined_movers(s, mentions, clauses, self.mentions.objects.led_by)  # "a doctor and two nurses wheel ..."
 
     def _led_with_next(self, mentions: list[Mention], k: int) -> bool:
         """Whether mention k is taken along by a leader and the next is joined to it by "and" ("leads
