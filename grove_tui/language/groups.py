@@ -18,6 +18,7 @@ from grove_tui.language.called_in import called_in_to
 from grove_tui.language.carried_moves import moves_at
 from grove_tui.language.robot_journey import journey_words
 from grove_tui.language.clauses import Clause, Clauses
+from grove_tui.language.exception_places import split_at_the_verb
 from grove_tui.language.escorted import attribute_end, company_between, share_with_joined_movers
 from grove_tui.language.fronted_stays import sentence_stay, stayed_spots
 from grove_tui.language.later_stops import later_words
@@ -220,8 +221,7 @@ class Groups:
                     and not clauses[k - 1].has_action and clauses[k].has_action:
                 # "Everybody except the receptionist leaves": the verb is the everybody's; the
                 # exception does not do it, so stays where it is
-                clauses[k - 1] = replace(clauses[k], places=clauses[k - 1].places + clauses[k].places)
-                clauses[k] = Clause()
+                clauses[k - 1], clauses[k] = split_at_the_verb(clauses[k - 1], clauses[k])
         for k, m in enumerate(mentions):
             if k > 0 and self.mentions.objects.followed(m.first) and not m.partitive and mentions[k - 1].last < m.first and \
                     clauses[k - 1].intent == "follow":

@@ -364,7 +364,7 @@ class Mentions:
         low = self.s.low
         prev = low[at - 1] if at > 0 else ""
         before = low[at - 2] if at > 1 else ""
-        return prev in lx.EXCEPT_WORDS - {"but"} or (prev == "from" and before == "apart") or \
+        return prev in lx.EXCEPT_WORDS - {"but"} or (prev, before) in (("from", "apart"), ("but", "everyone"), ("but", "everybody")) or \
             (prev == "than" and before == "other") or (prev == "for" and before in lx.EXCEPT_WORDS)
 
     def _only_people_before(self, p: int, other: bool = True) -> bool:  # "the only other person": one more, not all

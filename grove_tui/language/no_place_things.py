@@ -2,7 +2,7 @@
 ("threads its way through forty-odd pickers", "weaves through a dozen pickers": the people the robot
 passes, not a room the world lacks; round 44, a collective of them: "weaves through a swarm of
 schoolkids", "pushes through a gaggle of hens"), and a handheld device something is done on ("recording it on a
-phone", "chatting on a mobile", "taking photos on a tablet")."""
+phone", "chatting on a mobile", "taking photos on a tablet") or gathered round ("huddle round a laptop")."""
 
 from __future__ import annotations
 
@@ -15,7 +15,8 @@ from grove_tui.language.tokens import lemma
 # Devices held in the hand that something is done on.
 DEVICES = frozenset("phone mobile smartphone iphone tablet ipad laptop camera camcorder kindle walkie-talkie "
                     "walkie radio handset headset gopro".split())
-_DEVICE_PREPOSITIONS = frozenset({"on", "onto", "over", "via", "with"})
+# "on a phone", "over the radio"; "huddle round a laptop", "crowd around her phone": a device gathered round
+_DEVICE_PREPOSITIONS = frozenset({"on", "onto", "over", "via", "with", "round", "around"})
 _COUNT_WORDS = frozenset("dozen dozens score scores hundred hundreds odd -odd or so some about around nearly "
                          "almost over roughly".split())
 
