@@ -105,6 +105,7 @@ from grove_tui.language.bare_fronted_wholes import with_fronted_whole_articles
 from grove_tui.language.little_ones import with_little_ones
 from grove_tui.language.described_youngest import with_described_youngest
 from grove_tui.language.fronted_subsets import with_fronted_subsets
+from grove_tui.language.setup_orders import as_setup_orders
 from grove_tui.language.included_members import with_included_members
 from grove_tui.language.joined_kinds import with_joined_kinds
 from grove_tui.language.counted_lists import with_counted_lists
@@ -206,6 +207,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = without_number_words(text, index)  # "to number 107": to the room 107
     text = with_chat_articles(with_chat_pairs(text))  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
     text = as_dropped_off(as_ordered_clauses(as_got_out(as_workers(text))), index)  # "Have Janet man the front desk": Janet mans it; "get the parents in X out by Y"; "leaves a box with the desk": drops it off there
+    text = as_setup_orders(text)  # "Set up a class of fifteen in X and two helpers in Y": "Have ..."
     text = with_counted_outings(as_outing_parties(text))  # "a stag do of twelve": a stag party of twelve; "twenty on the tour": twenty people on it
     text = with_counted_collectives(with_scale_figures(with_joined_kinds(with_counted_lists(with_rough_scales(with_scale_and_figures(text))))))  # "the cast of 14", "Six of Blue Watch"; "the hundred-odd travellers": about 100; "ten men and women": ten people
     text = with_queues_had(with_queue_lengths(text))  # "the line at X is forty strong", "X has a line of 3": they queue at X
