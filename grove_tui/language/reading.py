@@ -51,6 +51,7 @@ from grove_tui.language.ordinal_others import with_ordinal_others
 from grove_tui.language.watched_people import without_watched
 from grove_tui.language.vehicle_loads import with_vehicle_loads
 from grove_tui.language.chat_articles import with_chat_articles
+from grove_tui.language.chat_place_tallies import with_chat_place_tallies
 from grove_tui.language.described_things import without_described_things
 from grove_tui.language.named_events import without_named_events
 from grove_tui.language.work_imperatives import as_workers
@@ -191,7 +192,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     """The groups of people a prompt describes and what it asks of the robot, in the world's own
     place names (see the module doc)."""
     typed = " ".join((prompt or "").split())
-    text = without_fronted_lead_times(normalise(typed))  # "Ten minutes ahead of the late shift, ...": when, no ten of a shift
+    text = without_fronted_lead_times(normalise(with_chat_place_tallies(typed, place_index(world))))  # "conference rm x3": 3 people in it  # "Ten minutes ahead of the late shift, ...": when, no ten of a shift
     if not text:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
