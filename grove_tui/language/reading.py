@@ -51,6 +51,7 @@ from grove_tui.language.ordinal_others import with_ordinal_others
 from grove_tui.language.watched_people import without_watched
 from grove_tui.language.vehicle_loads import with_vehicle_loads
 from grove_tui.language.chat_articles import with_chat_articles
+from grove_tui.language.chat_place_tallies import with_chat_place_tallies
 from grove_tui.language.described_things import without_described_things
 from grove_tui.language.named_events import without_named_events
 from grove_tui.language.work_imperatives import as_workers
@@ -105,6 +106,7 @@ from grove_tui.language.bare_fronted_wholes import with_fronted_whole_articles
 from grove_tui.language.little_ones import with_little_ones
 from grove_tui.language.described_youngest import with_described_youngest
 from grove_tui.language.fronted_subsets import with_fronted_subsets
+from grove_tui.language.setup_orders import as_setup_orders
 from grove_tui.language.included_members import with_included_members
 from grove_tui.language.joined_kinds import with_joined_kinds
 from grove_tui.language.counted_lists import with_counted_lists
@@ -190,7 +192,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     """The groups of people a prompt describes and what it asks of the robot, in the world's own
     place names (see the module doc)."""
     typed = " ".join((prompt or "").split())
-    text = without_fronted_lead_times(normalise(typed))  # "Ten minutes ahead of the late shift, ...": when, no ten of a shift
+    text = without_fronted_lead_times(normalise(with_chat_place_tallies(typed, place_index(world))))  # "conference rm x3": 3 people in it  # "Ten minutes ahead of the late shift, ...": when, no ten of a shift
     if not text:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
@@ -206,6 +208,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = without_number_words(text, index)  # "to number 107": to the room 107
     text = with_chat_articles(with_chat_pairs(text))  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
     text = as_dropped_off(as_ordered_clauses(as_got_out(as_workers(text))), index)  # "Have Janet man the front desk": Janet mans it; "get the parents in X out by Y"; "leaves a box with the desk": drops it off there
+    text = as_setup_orders(text)  # "Set up a class of fifteen in X and two helpers in Y": "Have ..."
     text = with_counted_outings(as_outing_parties(text))  # "a stag do of twelve": a stag party of twelve; "twenty on the tour": twenty people on it
     text = with_counted_collectives(with_scale_figures(with_joined_kinds(with_counted_lists(with_rough_scales(with_scale_and_figures(text))))))  # "the cast of 14", "Six of Blue Watch"; "the hundred-odd travellers": about 100; "ten men and women": ten people
     text = with_queues_had(with_queue_lengths(text))  # "the line at X is forty strong", "X has a line of 3": they queue at X
