@@ -17,7 +17,7 @@ what people do or where, which the clause reader leaves to them:
   robot somewhere, said after a comma, whose occasion ("at a gig") is no place (surprised_at.py);
 - going off to hide after seeing the robot, an avoidance (robot_hiding.py); a step back or aside from the
   robot where one stands, located there (stepped_aside.py); coming up to the robot in anger, Threatening
-  (angry_approach.py).
+  (angry_approach.py); a fright fronted with the robot's clause, avoiding it (fronted_fright_clauses.py).
 """
 
 from __future__ import annotations
@@ -35,6 +35,7 @@ from grove_tui.language.gathered_and_dropped import gathered_and_dropped
 from grove_tui.language.dogged_steps import dogging_the_robot
 from grove_tui.language.feeling_adjectives import coloured_by_feeling
 from grove_tui.language.feeling_phrases import feelings_said_outright
+from grove_tui.language.fronted_fright_clauses import frightened_by_fronted_clause
 from grove_tui.language.fronted_surprise import surprised_when_fronted
 from grove_tui.language.leisure_places import leisure_places
 from grove_tui.language.model import PromptReading
@@ -61,6 +62,7 @@ def with_clause_passes(prompt: str, index: PlaceIndex, reading: PromptReading) -
     groups = feelings_said_outright(prompt, coming_over_after_seeing(prompt, dogging_the_robot(groups)))
     groups = hiding_after_seeing(groups)  # "sees the robot and scurries off to hide": avoiding it
     groups = surprised_when_fronted(prompt, groups)  # "Startled, the temp leaps back": surprise
+    groups = frightened_by_fronted_clause(prompt, groups)  # "Spooked as the robot rolls up, kids scramble off": Scared
     groups = angry_approach(prompt, groups)  # "Red-faced, a dealer storms up to the robot": a threat
     groups = stepped_aside_in_place(groups)  # "an intern at the printer steps back": stays at the printer
     unknown = tuple(dict.fromkeys((*reading.unknown_places, *searched_unknown(prompt, index))))

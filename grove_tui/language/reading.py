@@ -71,7 +71,9 @@ from grove_tui.language.mid_events import with_mid_events
 from grove_tui.language.owned_partitives import without_partitive_owners
 from grove_tui.language.past_drills import without_past_drills
 from grove_tui.language.post_verbs import as_work_at_posts
+from grove_tui.language.fronted_feeling_waits import without_feelings_before_stays
 from grove_tui.language.fronted_feelings import with_small_fronted_feelings
+from grove_tui.language.waiting_then_sent import without_staying_before_passive_moves
 from grove_tui.language.fronted_held import with_small_held_fronts
 from grove_tui.language.clauses import Clauses
 from grove_tui.language.cleared_checkpoints import as_passed_checkpoints
@@ -214,9 +216,11 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_queues_had(with_queue_lengths(text))  # "the line at X is forty strong", "X has a line of 3": they queue at X
     text = as_work_at_posts(as_simple_work(text))  # "Janet is manning the desk", "Maria runs the issue desk": she mans it
     text = with_fronted_movers(text)  # "Pushing her dad's wheelchair, a woman brings him ...": her dad goes too
+    text = without_staying_before_passive_moves(text)  # "the travellers waiting there are sent up X": "the travellers there are sent up X"
     text = with_crammed_in(text)  # "nine porters are crammed into the lounge": they are in it
     text = with_talk_idioms(text)  # "orderlies chinwag by the lifts": they chat there
     text = with_small_held_fronts(text)  # "Mug in hand, a keeper walks ...": no one called Mug
+    text = without_feelings_before_stays(text)  # "Fed up after an hour in X, a man ...": "After an hour in X, ..."
     text = with_small_fronted_feelings(text)  # "Fascinated, a little lad ...": no one called Fascinated
     text = without_partitive_owners(text)  # "a trio of the accused's brothers": a trio of brothers
     text = with_ordinal_others(text)  # "two guards at X and a third at Y": another guard
