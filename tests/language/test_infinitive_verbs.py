@@ -20,3 +20,7 @@ def test_the_verb_of_a_purpose_is_no_unknown_place(read, world, prompt, goal):
 
 def test_an_unknown_place_after_to_is_still_refused(read):
     assert read("hospital", "Three visitors walk to the bowling alley.").unknown_places != ()
+
+
+def test_a_place_word_the_parser_reads_as_a_verb_is_still_a_place(read):
+    assert read("airport", "Nine passengers walk to gate Q12.").unknown_places != ()
