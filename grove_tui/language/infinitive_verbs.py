@@ -14,6 +14,6 @@ def infinitive_verb(s: Sentence, k: int, at: int) -> bool:
     """Whether the bare word at k, right after a "to" (the preposition at `at` or its last word), is the verb of an infinitive."""
     if not (0 <= at < k < s.n) or s.low[k - 1] != "to":  # "in to sign": "to" ends the preposition at `at`
         return False
-    if k + 1 >= s.n or s.is_punct(k + 1) or IDENTIFIER.fullmatch(s.low[k + 1]):
+    if k + 1 >= s.n or s.is_punct(k + 1) or any(IDENTIFIER.fullmatch(w) and not w.isalpha() for w in s.low[k + 1:k + 4]):
         return False  # "walk to gate C4", "to gate.": the parser's verb is a place's word, its number or nothing after
     return s.w[k - 1].tag == "TO" and s.w[k].tag == "VB"
