@@ -51,6 +51,7 @@ from grove_tui.language.stepped_aside import stepped_aside_in_place
 from grove_tui.language.steered_clear import steering_clear_of_the_robot
 from grove_tui.language.surprised_at import occasions, surprised_at
 from grove_tui.language.walked_animals import walked_animals
+from grove_tui.language.workplace_people import at_their_workplace
 from grove_tui.language.led_animals import led_animals
 
 
@@ -65,6 +66,7 @@ def with_clause_passes(prompt: str, index: PlaceIndex, reading: PromptReading) -
     groups = frightened_by_fronted_clause(prompt, groups)  # "Spooked as the robot rolls up, kids scramble off": Scared
     groups = angry_approach(prompt, groups)  # "Red-faced, a dealer storms up to the robot": a threat
     groups = stepped_aside_in_place(groups)  # "an intern at the printer steps back": stays at the printer
+    groups = at_their_workplace(index, groups)  # "the cloakroom attendant hangs up coats": at the cloakroom
     unknown = tuple(dict.fromkeys((*reading.unknown_places, *searched_unknown(prompt, index))))
     events = occasions(prompt)
     unknown = tuple(u for u in unknown if not set(u.lower().split()[-1:]) & events)

@@ -27,6 +27,7 @@ from grove_tui.language.going_idioms import straight_for
 from grove_tui.language.going_verbs import goes_to_after, named_thing, obliged_to, sets_off_for
 from grove_tui.language.pronoun_places import searched_or_queued_for
 from grove_tui.language.purpose_with import with_object_end
+from grove_tui.language.readied_for import readied_for
 from grove_tui.language.purpose_after_for import purpose_after_for_place
 from grove_tui.language.purpose_after_place import purpose_after_destination
 from grove_tui.language.purpose_verbs import particle_object, reason_end, verb_with_an_object
@@ -329,7 +330,7 @@ class Clauses(ClauseCues):
         if with_end > end:  # "to help with boarding": what the purpose is done with (purpose_with.py)
             end = with_end
             scan.c.purpose = s.span(said_from, end - 1)
-        if sought_object(s, end):  # "to look for prom dresses": what is sought (sought_things.py)
+        if sought_object(s, end) or readied_for(s, said_from, end, self.places.names_place, self.people.is_person_noun):  # "to look for prom dresses", "to set up for dinner": sought_things.py, readied_for.py
             end = s.phrase_end(end + 1)
             scan.c.purpose = s.span(said_from, end - 1)
         prep = s.preposition(end) if end < s.n else None

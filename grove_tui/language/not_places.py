@@ -15,8 +15,9 @@ and, round 23, a span of the event ("in the interval", "during the break") and w
 
 from __future__ import annotations
 
-__all__ = ["caught_by", "infinitive_with_object", "no_place_said"]
+__all__ = ["caught_by", "infinitive_verb", "no_place_said"]
 
+from grove_tui.language.infinitive_verbs import infinitive_verb
 from grove_tui.language import lexicon as lx
 from grove_tui.language.activity_nouns import PAUSE_NOUNS
 from grove_tui.language.consumed_things import consumed_thing
@@ -27,7 +28,6 @@ from grove_tui.language.hazards import ROOM_HEADS, cause_thing
 from grove_tui.language.held_and_spans import held_or_span
 from grove_tui.language.held_origins import origin_of_held
 from grove_tui.language.hidden_behind import hidden_behind
-from grove_tui.language.infinitive_objects import infinitive_with_object
 from grove_tui.language.no_place_things import no_place_thing
 from grove_tui.language.outing_words import an_outing
 from grove_tui.language.person_relatives import in_persons_relative

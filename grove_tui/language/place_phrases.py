@@ -39,7 +39,7 @@ from grove_tui.language.place_possessed import owned_places
 from grove_tui.language.its_places import its_place
 from grove_tui.language.movers import carried_in, taken_in
 from grove_tui.language.on_the_way import on_ones_way
-from grove_tui.language.not_places import caught_by, infinitive_with_object, no_place_said
+from grove_tui.language.not_places import caught_by, infinitive_verb, no_place_said
 from grove_tui.language.stage_parts import stage_part
 from grove_tui.language.bare_alias_kinds import by_bare_alias, other_kind_of_room
 from grove_tui.language.bare_place_names import bare_place_name
@@ -147,9 +147,9 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             phrase, j = informal[0], informal[1]  # "the hole in the wall": one name, not "hole" and "wall"
         if not phrase:
             return None
-        if prep == "to" and start == k and informal is None and len(phrase) == 1 and (lx.INTENT_VERBS.get(verb_lemma(
-                phrase[0])) is not None or infinitive_with_object(s, k)) and not self.whole_name(phrase):
-            return None  # "sit waiting to board", "comes over to check it": a verb, though a word of a place's name
+        if prep == "to" and start == k and informal is None and (len(phrase) == 1 and lx.INTENT_VERBS.get(verb_lemma(
+                phrase[0])) is not None or infinitive_verb(s, k, at)) and not self.whole_name(phrase):
+            return None  # "sit waiting to board", "to sign for": a verb, though "board" is a word of "departures board"
         lemmas = informal[2] if informal is not None else \
             tuple(phrase_lemmas(phrase)) or tuple(lemma(w) for w in phrase)
         if any(w in lx.ROBOT_WORDS for w in phrase) and not self.whole_name(phrase) or self.people.is_person_phrase(lemmas) and not absent_kind(s.index, lemmas):

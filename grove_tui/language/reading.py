@@ -28,6 +28,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import replace
 
+from grove_tui.language.awaited_people import awaited_at_the_place
 from grove_tui.language.activity_times import without_activity_times
 from grove_tui.language.asides import without_asides
 from grove_tui.language.awaited_events import with_until, without_awaited_things
@@ -272,6 +273,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     reading = owners_stay_put(typed, reading)  # "from Mr Shah's office to X; he stays put in his": in his office
     reading = poured_through(typed, index, whole_of_zone(typed, index, reading))  # "all of the circle, roughly 300 punters, escapes": from the circle; "pour through the lobby and ...": from the lobby
     reading = with_passing_moments(typed, reading)  # "look at the robot as it passes the desk"
+    reading = awaited_at_the_place(reading)  # "the robot waits for ten commuters to board at platform 1": there too
     return replace(reading, prompt=typed, corrections=tuple(corrections))
 
 

@@ -1,7 +1,7 @@
 """People joined by "and" who move someone along (language/escorted.py `share_with_joined_movers`,
 language/leading_verb_tags.py): every one of them takes the moved person's route, and "a nurse wheel" after
 "A porter and" is the verb, not one noun. A verb after "to" with an object is no place
-(language/infinitive_objects.py)."""
+(language/infinitive_verbs.py)."""
 
 from __future__ import annotations
 
