@@ -655,6 +655,10 @@ class _KeepOutProbe(_Probe):
         return (HOLDS if kept >= _need(self.claim, n) else FAILS), text
 
 
+# Metres from its goal at which the robot's drive is over (a keep_out judged on the whole drive).
+ARRIVED_RADIUS = 1.0
+
+
 class _RobotKeepOutProbe(_Probe):
     """keep_out in the robot's row ("drives to the pharmacy, avoiding the cafeteria"): its trajectory never
     enters the place; a run that ends before its drive would be over cannot say it kept out."""
@@ -664,6 +668,7 @@ class _RobotKeepOutProbe(_Probe):
         self.entered = math.inf
         self.seen_robot = False
         self.last_t = 0.0
+        self.arrived = False
 
     def add(self, f: _Frames) -> None:
         if f.robot is None:
@@ -674,6 +679,10 @@ class _RobotKeepOutProbe(_Probe):
         if inside.any() and math.isinf(self.entered):
             self.entered = float(f.t[np.argmax(inside)])
             self.final = True  # in is in: a longer run cannot undo it
+        goal = self.checker.scenario.robot.goal if self.checker.scenario.robot is not None else None
+        if goal is not None and not self.arrived:
+            # at its goal, the drive the sentence is about is over
+            self.arrived = bool((np.hypot(f.robot[:, 0] - goal[0], f.robot[:, 1] - goal[1]) <= ARRIVED_RADIUS).any())
 
     def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
         if not self.seen_robot:
@@ -682,7 +691,7 @@ class _RobotKeepOutProbe(_Probe):
             return FAILS, f"the robot was in {self.where()} at {_when(self.entered)}"
         text = f"the robot never in {self.where()}"
         needs = self.claim.needs_seconds or 0.0
-        if self.last_t + 1e-6 < needs:
+        if self.last_t + 1e-6 < needs and not self.arrived:
             return UNCHECKED, f"{text} up to {_when(self.last_t)}; its drive takes about {needs:.0f} s: run it longer"
         return HOLDS, text
 
