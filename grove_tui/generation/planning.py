@@ -460,7 +460,7 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
 def _kept_out_noted(world: World, kept_out: Sequence[str], spec: RobotSpec, notes: list[str]) -> RobotSpec:
     """The robot's plan, with a note for each place it is to keep out of that it starts in, ends in or goes
     through (no way round): said, never hidden."""
-    route = [tuple(p) for p in spec.path] or [spec.start, spec.goal]
+    route = [(float(p[0]), float(p[1])) for p in spec.path] or [spec.start, spec.goal]
     notes.extend(n for n in keep_out_notes(world, kept_out, route) if n not in notes)
     return spec
 
