@@ -28,7 +28,7 @@ _WITHOUT = re.compile(
     r"|entering|crossing|using|visiting|passing(?:\s+through)?)\s+" + _NOT_SOMEONE,
     re.IGNORECASE)
 _NEVER = re.compile(
-    r"\b(?:never|not|n't)\s+(?:once\s+|ever\s+)?(?:(?:enters|entering|entered|enter)"
+    r"(?:\bnever|\bnot|n['’]t)\s+(?:once\s+|ever\s+)?(?:(?:enters|entering|entered|enter)"
     r"|(?:goes|going|went|go|drives|driving|drove|drive|passes|passing|passed|pass|rolls|rolling|rolled|roll|"
     r"strays|straying|strayed|stray|ventures|venturing|ventured|venture)\s+(?:through|thru|via|into|inside|near|in))"
     r"\s+" + _NOT_SOMEONE,
@@ -47,4 +47,6 @@ def kept_away(text: str) -> str:
     """The text with "keeping away from the X" (and the module doc's other wordings) said as
     "avoiding the X" for a place X."""
     text = _ROBOT_AVOIDS.sub(r"\1avoiding ", text)
-    return _NEVER.sub("avoiding ", _WITHOUT.sub("avoiding ", _KEPT_AWAY.sub("avoiding ", text)))
+    text = _WITHOUT.sub("avoiding ", _KEPT_AWAY.sub("avoiding ", text))
+    # "doesn't go through the X": "does avoiding the X", not "doesavoiding"
+    return _NEVER.sub(lambda m: " avoiding " if m.group(0)[:2].lower() in ("n'", "n’") else "avoiding ", text)

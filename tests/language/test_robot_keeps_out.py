@@ -30,6 +30,9 @@ CASES = [
      "gate_a1"),
     ("hospital", "The robot drives to the pharmacy and stays away from the cafeteria.", ("cafeteria",), None,
      "pharmacy"),
+    ("hospital", "The robot drives to the pharmacy and doesn't go through the cafeteria.", ("cafeteria",), None,
+     "pharmacy"),
+    ("office", "The robot goes to the boardroom without entering the kitchen.", ("kitchen",), None, "boardroom"),
 ]
 
 
