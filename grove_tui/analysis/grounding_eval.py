@@ -32,7 +32,7 @@ a reach counted from then, as in "waits for a minute and then walks on"); robot 
 approach, block, avoid, look: one look of a second at least, stare: facing it most of the time it is near); at
 (a place: where the robot reaction happens, for block and approach: "blocks the robot at the gateline" is
 {robot: block, at: gateline}, a block elsewhere does not count; a door or thing counts 3 m round). The robot's: reach, via, cross (from its edge half its width across), stay, patrol
-(a place), follow and passes (words of a group).
+(a place), follow, passes (words of a group) and keep_out (a place: its trajectory never there).
 """
 
 from __future__ import annotations
@@ -58,7 +58,7 @@ if TYPE_CHECKING:
 
 GROUP_OUTCOMES = ("reach", "stay", "queue", "wander", "leave", "start", "converse", "evacuate", "move", "pace",
                   "robot", "keep_out", "follow", "for", "at")
-ROBOT_OUTCOMES = ("reach", "via", "cross", "stay", "patrol", "follow", "passes")
+ROBOT_OUTCOMES = ("reach", "via", "cross", "stay", "patrol", "follow", "passes", "keep_out")
 REACTIONS = ("follow", "approach", "block", "avoid", "look", "stare")
 BLOCK_AT_RADIUS = 3.0  # metres round a door or thing that count as blocking "at" it
 # Hand thresholds: what a reader of the sentence would accept as done (the same measures as the report's).
@@ -373,6 +373,12 @@ def _robot_claims(robot: Iterable[tuple[str, object]], world: World, scenario: S
             claims.append(Claim("robot_follow_person", tag + str(value), "expected", partners=partners, distance=3.0))
         elif kind == "passes":
             claims.append(_passes_claim(tag, str(value), world, pairs))
+        elif kind == "keep_out":
+            # "..., avoiding the cafeteria": the robot never there (outcomes._RobotKeepOutProbe); a list, as elsewhere
+            for name in _names(value):
+                claim = _place("keep_out", name, world, 1)
+                claims.append(Claim("keep_out", f"{tag}{name}", "expected", zone=claim.zone, place=claim.place,
+                                    point=claim.point, radius=claim.radius, share=1.0))
     return claims
 
 

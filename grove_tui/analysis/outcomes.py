@@ -195,7 +195,7 @@ class OutcomeChecker:
         self._near = Nearness({gi: self._cols(g.members) for gi, g in enumerate(self.planned.groups)})
         if self.planned.robot is not None:
             for ci, claim in enumerate(self.planned.robot.claims):
-                probe = _make_probe(claim, self, np.zeros(0, dtype=np.int64), 0)
+                probe = _make_probe(claim, self, np.zeros(0, dtype=np.int64), 0, robot_row=True)
                 if probe is not None:
                     self._probes.append(((-1, ci), probe))
 
@@ -653,6 +653,47 @@ class _KeepOutProbe(_Probe):
         if went.size:
             text += f" (first in at {_when(float(went.min()))})"
         return (HOLDS if kept >= _need(self.claim, n) else FAILS), text
+
+
+# Metres from its goal at which the robot's drive is over (a keep_out judged on the whole drive).
+ARRIVED_RADIUS = 1.0
+
+
+class _RobotKeepOutProbe(_Probe):
+    """keep_out in the robot's row ("drives to the pharmacy, avoiding the cafeteria"): its trajectory never
+    enters the place; a run that ends before its drive would be over cannot say it kept out."""
+
+    def __init__(self, claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> None:
+        super().__init__(claim, checker, cols, members)
+        self.entered = math.inf
+        self.seen_robot = False
+        self.last_t = 0.0
+        self.arrived = False
+
+    def add(self, f: _Frames) -> None:
+        if f.robot is None:
+            return
+        self.seen_robot = True
+        self.last_t = max(self.last_t, float(f.t[-1]))
+        inside = self.at_place(f.robot[:, None, :2])[:, 0]
+        if inside.any() and math.isinf(self.entered):
+            self.entered = float(f.t[np.argmax(inside)])
+            self.final = True  # in is in: a longer run cannot undo it
+        goal = self.checker.scenario.robot.goal if self.checker.scenario.robot is not None else None
+        if goal is not None and not self.arrived:
+            # at its goal, the drive the sentence is about is over
+            self.arrived = bool((np.hypot(f.robot[:, 0] - goal[0], f.robot[:, 1] - goal[1]) <= ARRIVED_RADIUS).any())
+
+    def verdict(self, checker: OutcomeChecker, events: dict[int, list[SimEvent]]) -> tuple[str, str]:
+        if not self.seen_robot:
+            return FAILS, "no robot in the run"
+        if not math.isinf(self.entered):
+            return FAILS, f"the robot was in {self.where()} at {_when(self.entered)}"
+        text = f"the robot never in {self.where()}"
+        needs = self.claim.needs_seconds or 0.0
+        if self.last_t + 1e-6 < needs and not self.arrived:
+            return UNCHECKED, f"{text} up to {_when(self.last_t)}; its drive takes about {needs:.0f} s: run it longer"
+        return HOLDS, text
 
 
 class _MoveProbe(_Probe):
@@ -1635,8 +1676,9 @@ _PROBES: dict[str, type[_Probe]] = {
 }
 
 
-def _make_probe(claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int) -> _Probe | None:
-    kind = _PROBES.get(claim.kind)
+def _make_probe(claim: Claim, checker: OutcomeChecker, cols: np.ndarray, members: int,
+                robot_row: bool = False) -> _Probe | None:
+    kind = _RobotKeepOutProbe if robot_row and claim.kind == "keep_out" else _PROBES.get(claim.kind)
     if kind is None:
         return None
     if claim.status == FAILS and claim.kind != "count":

@@ -56,6 +56,7 @@ from grove_tui.generation.robot_passing import people_stay_in, through_formation
 from grove_tui.scenario.model import AgentSpec, RobotSpec
 from grove_tui.navigation.velocity_field import VelocityField
 from grove_tui.generation.keep_out import keep_out_planner
+from grove_tui.generation.robot_keep_out import keep_out_notes, kept_out_zones, robot_kept_out
 from grove_tui.generation.waypoints import plan_waypoints
 from grove_tui.world.model import Door, Entity, World
 from grove_tui.navigation.grid import OccupancyGrid
@@ -322,11 +323,17 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
                 formations = [f for f in formations if f not in formations_at(formations, point, clearance)]
     # "drives through the queue": the queue the robot is sent through is no obstacle; it passes by its gap
     formations, gaps = through_formations(reading, world, grid, formations)
-    robot_planner = ThetaStarPlanner(block_formations(grid, formations, clearance)) if formations else None
+    # "..., avoiding the cafeteria": its path goes round the places its clause keeps out of (robot_keep_out.py)
+    kept_out = robot_kept_out(world, asked)
+    around = keep_out_planner(world, grid, kept_out) if kept_out else None
+    robot_planner = ThetaStarPlanner(block_formations(around.grid if around is not None else grid, formations,
+                                                      clearance)) if formations else None
     space = FreeSpace(world, grid)
     guided_zone = _guided_zone(world, reading, post) if task == "cross" else None
     evacuated = _evacuated_zones(post) - named_places - {guided_zone}
-    picker = _StartPicker(world, grid, space, people, robot_planner, evacuated, notes)
+    picker = _StartPicker(world, grid, space, people, robot_planner, evacuated | (kept_out_zones(world, kept_out)
+                                                                                  - named_places), notes)
+    through = [r for r in through if r not in kept_out]  # people who react there: not where it may not go
 
     def plan_path(a: Point, b: Point, may_cross: bool = True) -> np.ndarray:
         if robot_planner is not None:
@@ -335,6 +342,12 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
             except PlanningError:
                 if not may_cross:
                     raise
+        if around is not None:
+            try:
+                found: np.ndarray = around.plan(a, b, start_label="robot start", goal_label="robot goal")
+                return found
+            except PlanningError:
+                pass  # no way round: the plain path, and keep_out_notes say so once the path is set
         path: np.ndarray = planner.plan(a, b, start_label="robot start", goal_label="robot goal")
         if robot_planner is not None:
             crossed = [f.describe() for f in formations
@@ -350,7 +363,7 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
                                lambda path, a, b: _through(world, path, (), through, picker, plan_path, a, b)) \
         if errand is not None else None
     if errand_spec is not None:
-        return errand_spec
+        return _kept_out_noted(world, kept_out, errand_spec, notes)
     follows: tuple[int, ...] = ()
     if task == "follow":
         follows = _followed(reading, post)
@@ -419,7 +432,8 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
     if task in ("wait", "follow"):
         if start is None:
             start = _chosen_pair(world, grid, post, people, seed, picker, reactors, plan_path, None, None)[0]
-        return RobotSpec(start=start, goal=start, path=(start,), task=task, follows=follows)
+        return _kept_out_noted(world, kept_out, RobotSpec(start=start, goal=start, path=(start,), task=task,
+                                                          follows=follows), notes)
 
     via = asked.via if asked is not None else ()
     via_zones = [z for z in (world.zone_of_place(v) for v in via if not _is_spot(world, v)) if z]
@@ -433,13 +447,22 @@ def plan_robot(world: World, grid: OccupancyGrid, planner: CachedPlanner, post: 
     if start is None or goal is None:
         start, goal, path = _chosen_pair(world, grid, post, people, seed, picker, reactors, plan_path, start, goal)
         if not via_zones and not via_spots and not through:
-            return RobotSpec(start=start, goal=goal, path=_rounded(path), task=task)
+            return _kept_out_noted(world, kept_out, RobotSpec(start=start, goal=goal, path=_rounded(path), task=task),
+                                   notes)
     try:
         path = plan_path(start, goal)
         path = _through(world, path, via_zones, through, picker, plan_path, start, goal, via_spots)
     except PlanningError as exc:
         raise GenerationError(f"the robot cannot reach its goal: {exc}") from None
-    return RobotSpec(start=start, goal=goal, path=_rounded(path), task=task)
+    return _kept_out_noted(world, kept_out, RobotSpec(start=start, goal=goal, path=_rounded(path), task=task), notes)
+
+
+def _kept_out_noted(world: World, kept_out: Sequence[str], spec: RobotSpec, notes: list[str]) -> RobotSpec:
+    """The robot's plan, with a note for each place it is to keep out of that it starts in, ends in or goes
+    through (no way round): said, never hidden."""
+    route = [(float(p[0]), float(p[1])) for p in spec.path] or [spec.start, spec.goal]
+    notes.extend(n for n in keep_out_notes(world, kept_out, route) if n not in notes)
+    return spec
 
 
 def _followers_way(reading: PromptReading | None) -> tuple[str | None, str | None] | None:

@@ -54,6 +54,7 @@ from grove_tui.generation.run_length import with_run_length
 from grove_tui.generation.stay_claims import stay_claims
 from grove_tui.generation.robot_errand import errand_claims
 from grove_tui.generation.robot_passing import passed_zones
+from grove_tui.generation.robot_keep_out import robot_keep_out_claim, robot_kept_out
 from grove_tui.language.robot_errands import robot_errand
 from grove_tui.generation.route_time import Leg, RouteWalk
 from grove_tui.language.model import Count, FieldConfidence, RobotReading
@@ -1383,6 +1384,9 @@ def _robot_row(asked: RobotReading | None, robot: RobotSpec | None, world: World
         else:
             claims.append(Claim("robot_follow_person", "follow someone", "nobody to follow", FAILS,
                                 "no group of the sentence is the one the robot follows"))
+    for name in robot_kept_out(world, asked):
+        # "..., avoiding the cafeteria": never there, measured on its trajectory (✗ now if the plan goes in)
+        claims.append(robot_keep_out_claim(_keep_out_claim(world, name, 1), world, path, seconds))
     return RobotGrounding(asked.task, asked.text, tuple(claims), plan, unsure)
 
 

@@ -160,6 +160,9 @@ class RobotReading:
     # the groups (their `who`) its clause goes through, past or around ("threads its way through the crowd
     # of visitors", "drives through the queue"): their places are among `via`, and it is to pass them
     passes: tuple[str, ...] = ()
+    # places its clause says it keeps out of ("drives to the pharmacy, avoiding the cafeteria", "without going
+    # through the waiting room"): never among its start, destination, location or via; its path goes round them
+    avoid: tuple[str, ...] = ()
 
     def confidence_of(self, name: str) -> FieldConfidence | None:
         return next((c for c in self.confidence if c.field == name), None)
@@ -168,7 +171,8 @@ class RobotReading:
         return {"task": self.task, "start": self.start, "destination": self.destination,
                 "location": self.location, "via": list(self.via), "text": self.text,
                 "confidence": [c.to_dict() for c in self.confidence], "follows": self.follows,
-                "wait_seconds": self.wait_seconds, "guides": self.guides, "passes": list(self.passes)}
+                "wait_seconds": self.wait_seconds, "guides": self.guides, "passes": list(self.passes),
+                "avoid": list(self.avoid)}
 
     @classmethod
     def from_dict(cls, data: Parsed) -> RobotReading:
@@ -176,7 +180,7 @@ class RobotReading:
         return cls(str(data["task"]), data.get("start"), data.get("destination"), data.get("location"),
                    tuple(data.get("via", ())), str(data.get("text", "")), _confidences(data.get("confidence")),
                    data.get("follows"), float(seconds) if seconds is not None else None, data.get("guides"),
-                   tuple(data.get("passes", ())))
+                   tuple(data.get("passes", ())), tuple(data.get("avoid", ())))
 
 
 @dataclass(frozen=True)

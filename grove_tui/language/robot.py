@@ -22,6 +22,7 @@ from grove_tui.language.people import People
 from grove_tui.language.place_phrases import Place, place_confidences
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.robot_asides import after_aside
+from grove_tui.language.robot_avoided import fronted_avoiding
 from grove_tui.language.robot_bound import bound_trip
 from grove_tui.language.robot_escorts import escorts_to_a_place
 from grove_tui.language.robot_habits import habit_task
@@ -85,6 +86,7 @@ class RobotClauses:
                 continue
             first, verb, command = found
             first = fronted_purpose(s, first, taken)  # "To reach the toy store, the robot must ..."
+            first = fronted_avoiding(s, first, taken)  # "Avoiding the cafeteria, the robot drives to ..."
             end = self._end(verb if verb is not None else i + 1, starts, first)
             second = robot_sequel(s, verb, end) if verb is not None else None
             if second is not None:
@@ -259,6 +261,7 @@ class RobotClauses:
         guides: str | None = None
         read_from: dict[str, Place] = {}
         texts: list[str] = []
+        avoid: list[str] = []  # "..., avoiding the cafeteria", "without going through the lobby" (kept_away.py)
         for rc in found:
             # "needs to wait by the door", "tell it to wait by the door": the task verb's "to" is no purpose
             told = {rc.verb - 1} if rc.verb is not None and rc.verb > 0 and s.low[rc.verb - 1] in ("to", "ta") else set()
@@ -294,8 +297,9 @@ class RobotClauses:
                 guides = self._followed(rc.verb)  # "guides them to the exit": whom it takes along
             if kind == "follow" and rc.verb is not None and follows is None:
                 follows = self._followed(rc.verb)
+            avoid += [a for a in clause.avoid if a not in avoid]
             for place in clause.places:
-                if place.match is None:
+                if place.match is None or place.match.name in avoid:
                     continue
                 name = place.match.name
                 read_from.setdefault(name, place)
@@ -336,7 +340,8 @@ class RobotClauses:
         if task_confidence is not None:
             confidence.insert(0, task_confidence)
         return RobotReading(task, start, destination, location, tuple(via), " ... ".join(texts), tuple(confidence),
-                            follows, wait_seconds if task == "wait" else None, guides if task == "cross" else None)
+                            follows, wait_seconds if task == "wait" else None, guides if task == "cross" else None,
+                            avoid=tuple(avoid))
 
     def _passes_by(self, verb: int | None) -> bool:
         """Whether the robot's verb says it goes by, though no place is named ("as it rolls past",

@@ -467,3 +467,19 @@ def test_the_robot_passes_people_only_while_they_are_there(clinic):
     assert check(clinic, None, near, events=early, robot_claims=(queue,)).status == HOLDS
     none = check(clinic, None, near, events=(), robot_claims=(queue,))
     assert none.status == FAILS and "nobody queued" in none.evidence
+
+
+def test_the_robots_keep_out_is_its_own_trajectory_never_in_the_place(clinic):
+    """keep_out in the robot's row ("drives along the corridor, avoiding the pharmacy") is measured on the
+    robot, not on a group of nobody: never in the room holds once its drive is over, in it is ✗."""
+    keep = Claim("keep_out", "pharmacy", "drive round pharmacy", zone="pharmacy", place="pharmacy", share=1.0,
+                 needs_seconds=12.0)
+    still = people(line((1, 1), (1, 1)), line((2, 1), (2, 1)))
+    along = run(20, still, line((1, 4), (9, 4), 1.0))  # stays in the lobby, reaches its goal (9, 4)
+    kept = check(clinic, None, along, robot_claims=(keep,))
+    assert kept.status == HOLDS and "never in pharmacy" in kept.evidence
+    into = run(20, still, line((1, 4), (17, 10), 1.5))  # through the corridor into the pharmacy
+    went = check(clinic, None, into, robot_claims=(keep,))
+    assert went.status == FAILS and "was in pharmacy at t =" in went.evidence
+    short = run(5, still, line((1, 4), (9, 4), 0.5))  # neither in nor at its goal yet: too soon to tell
+    assert check(clinic, None, short, robot_claims=(keep,)).status == UNCHECKED
