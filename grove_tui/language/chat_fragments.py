@@ -49,9 +49,10 @@ def chat_fragments(text: str) -> str:
     """The text with verbless chat items written with their people and verb (see the module doc)."""
     def bare(m: re.Match[str]) -> str:
         rest = text[m.end():]
-        word = rest.split()[0].lower() if rest.split() else ""
-        if word in ING_NOUNS or _ROOM_AFTER.match(rest):
-            return m.group(0)
+        words = rest.split()
+        word = words[0].lower() if words else ""
+        if word in ING_NOUNS or _ROOM_AFTER.match(rest) or len(words) > 1 and person_word(words[1].strip(",.;:")):
+            return m.group(0)  # "three giggling teenagers run": the "-ing" word describes the people said after it
         one = m.group(2).lower() in ("1", "one")
         return f"{m.group(1)}{m.group(2)} {'person' if one else 'people'} "
 

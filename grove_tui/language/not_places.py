@@ -42,6 +42,8 @@ from grove_tui.language.tokens import lemma, verb_lemma
 
 # Verbs of turning pages ("leafs through", "flicking through", "thumbs through").
 _PAGING = frozenset("leaf flick thumb riffle rifle skim browse page scroll sift rummage read look glance".split())
+# Verbs that "for" makes a way to a place ("heads for the wedding"): any other "for" an event is why they come.
+_HEADING = frozenset("head make run dash bolt race aim set leave depart go".split())
 # Particles that may stand between a passive participle and "by" ("torn off by", "blown in by").
 _PARTICLES = frozenset("off in out down over up away apart".split())
 # Spans of an event people are in ("in the interval", "during half-time"), and what people are on ("on a call").
@@ -51,8 +53,9 @@ _BUSY_ON = frozenset("call break duty shift lunch tea".split())
 
 def no_place_said(s: Sentence, k: int, prep: str, at: int) -> bool:
     """Whether the phrase from k after the preposition at `at` says no place (see the module doc)."""
-    if prep in ("at", "from", "in", "during") and names_an_event(s, k):
-        return True  # "at the tea dance", "from the Cub pack": a gathering, no place to refuse
+    if (prep in ("at", "from", "in", "during") or prep == "for" and verb_lemma(s.low[at - 1]) not in _HEADING) \
+            and names_an_event(s, k):
+        return True  # "at the tea dance", "from the Cub pack", "come in for the sale": a gathering, no place to refuse
     if in_persons_relative(s, at):
         return True  # "a teenager who slipped on the wet tiles": before the scene (person_relatives.py)
     if a_thing_bid_on(s, k, prep, at):
