@@ -12,6 +12,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.escaped_people import escapes_a_person
 from grove_tui.language.events import evacuating
 from grove_tui.language.hazards import calm_alarm, cue as hazard_cue, in_a_place_name
 from grove_tui.language.people import People
@@ -58,7 +59,8 @@ class ClauseCues:
             c.evacuate = True
             if c.intent is None or c.intent in lx.STATIONARY_INTENTS or c.intent == "walk":
                 c.intent, c.verb, c.verb_index, c.moves, c.has_action = "evacuate", s.verb(sent), sent, True, True
-        if any(verb_lemma(s.low[i]) in ("evacuate", "flee", "escape") or s.low[i] in ("evacuation",) for i in own):
+        if any(verb_lemma(s.low[i]) in ("evacuate", "flee", "escape") and not escapes_a_person(s, i)
+               or s.low[i] in ("evacuation",) for i in own):
             c.evacuate = True
         for i in own:
             pair = (s.verb(i), s.low[i + 1] if i + 1 < s.n else "")
@@ -119,7 +121,8 @@ class ClauseCues:
         """Whether the prompt speaks of an evacuation anywhere (a cue word or a hazard)."""
         s = self.s
         return any((s.low[i] in lx.EVACUATION_CUES or verb_lemma(s.low[i]) in lx.EVACUATION_CUES) and not
-                   calm_alarm(s, i) and not in_a_place_name(s, i) or self.hazard(i) for i in range(s.n))  # "the drill yard"
+                   calm_alarm(s, i) and not in_a_place_name(s, i) and not escapes_a_person(s, i) or self.hazard(i)
+                   for i in range(s.n))  # "the drill yard"; "escapes from his mum"
 
     def negated_tokens(self) -> set[int]:
         """The words of a clause about nobody ("No one uses the main corridor; ...", "No passengers

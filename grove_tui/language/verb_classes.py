@@ -16,6 +16,7 @@ rather than a word:
 from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.escaped_people import escapes_a_person
 from grove_tui.language.activity_nouns import ACTIVITY_PHRASES
 from grove_tui.language.hauled_loads import hauls_a_load
 from grove_tui.language.going_verbs import THING_TAKING_VERBS, carries_a_thing_to, more_verb_intent
@@ -93,6 +94,8 @@ def verb_intent(s: Sentence, i: int) -> str | None:
         return None  # "swap a failed drive in row B": a thing worked on, no driving
     if runs_a_thing(s, i):
         return None  # "actors run lines in the green room": a thing done there, no running
+    if escapes_a_person(s, i):
+        return "walk"  # "a toddler escapes from his mum": going off, no evacuation
     if v in lx.INTENT_VERBS:
         return lx.INTENT_VERBS[v]
     if v in LEAVING_VERBS or verb_lemma(s.low[i]) in LEAVING_VERBS:
