@@ -420,7 +420,7 @@ class Groups:
         # only a place they are sent to ("... to the exit") makes them walk. A way taken ("push a bed
         # along the corridor") is walking too. So is being the doer of a passive whose subject is a
         # destination ("the desk is approached by").
-        sends = any(p.prep in _SENDING or p.prep == "obj:dest" or c.has_action and p.prep == "from" and p.out_of  # "stumble out of X"
+        sends = any(p.prep in _SENDING or p.prep == "obj:dest" or c.has_action and (p.prep == "from" and p.out_of or p.prep == "out")  # "stumble out of X", "storms out the door"
                     for p in c.places) or (scene is not None and any(p.prep == "obj:dest" for p in scene.places))
         return "walk" if sends or c.robot else "wait"
 

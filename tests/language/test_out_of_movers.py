@@ -24,3 +24,12 @@ def test_an_unknown_verb_out_of_a_place_leaves_it(world, sentence, start):
 def test_out_of_breath_is_no_going_out():
     group = read_prompt("Two nurses out of breath wait in the cafeteria.", load_world("hospital")).groups[0]
     assert (group.intent, group.location) == ("wait", "cafeteria")
+
+
+@pytest.mark.parametrize("world, sentence, door", [
+    ("residential", "Grandad stomps out the back door in a huff.", "back_door"),
+    ("office", "The sacked temp storms out the main entrance.", "main_entrance"),
+])
+def test_an_unknown_verb_out_a_door_goes_through_it(world, sentence, door):
+    group = read_prompt(sentence, load_world(world)).groups[0]
+    assert (group.intent, group.destination) == ("walk", door)
