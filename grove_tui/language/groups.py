@@ -24,7 +24,7 @@ from grove_tui.language.fronted_stays import sentence_stay, stayed_spots
 from grove_tui.language.later_stops import later_words
 from grove_tui.language.group_counts import count_confidence, settle_count
 from grove_tui.language.joiners import joined_intent
-from grove_tui.language.leading_out import leads_out
+from grove_tui.language.leading_out import goes_out_by, leads_out
 from grove_tui.language.list_items import own_participle
 from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
@@ -420,9 +420,9 @@ class Groups:
         # only a place they are sent to ("... to the exit") makes them walk. A way taken ("push a bed
         # along the corridor") is walking too. So is being the doer of a passive whose subject is a
         # destination ("the desk is approached by").
-        sends = any(p.prep in _SENDING or p.prep == "obj:dest" or c.has_action and (p.prep == "from" and p.out_of or p.prep == "out")  # "stumble out of X", "storms out the door"
+        sends = any(p.prep in _SENDING or p.prep == "obj:dest"
                     for p in c.places) or (scene is not None and any(p.prep == "obj:dest" for p in scene.places))
-        return "walk" if sends or c.robot else "wait"
+        return "walk" if sends or c.robot or goes_out_by(c) else "wait"  # "stumble out of X", "storms out the door"
 
     @staticmethod
     def _settle_places(roles: Roles, intent: str, stationary: bool, moves: bool) -> None:

@@ -1,6 +1,7 @@
 """People who take others out with no place said: "staff guide passengers out", "a teacher leads the
 children outside", "the stewards usher everyone out". The leaders go (out, in an evacuation); those they
-take follow them."""
+take follow them. And (`goes_out_by`) a verb the lexicon lacks before "out of" a place or "out" a door goes out:
+"stumble out of the cafe", "Dad storms out the front door"."""
 
 from __future__ import annotations
 
@@ -11,6 +12,7 @@ from grove_tui.language.out_of_building import out_of_building
 from grove_tui.language.tokens import verb_lemma
 
 if TYPE_CHECKING:
+    from grove_tui.language.clauses import Clause
     from grove_tui.language.sentence import Sentence
 
 _OUT_WORDS = frozenset({"out", "outside", "away", "off"})
@@ -32,3 +34,10 @@ def leads_out(s: Sentence, start: int) -> bool:
             return True  # "leads them out of the building": out, no place named
         k += 1
     return False
+
+
+def goes_out_by(c: Clause) -> bool:
+    """Whether a clause with a verb of its own that gives no intent goes out of a place or out a door (module
+    doc); "mucking out the goat pen" (out a zone) is a chore there."""
+    return c.has_action and any(p.prep == "from" and p.out_of or p.prep == "out" and p.match is not None
+                                and p.match.kind == "door" for p in c.places)

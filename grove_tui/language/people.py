@@ -382,7 +382,7 @@ class People:
                 k += 1  # "a partially sighted woman", "a very frail man": the adverb says how, no one
                 continue
             if s.low[k] in lx.NP_MODIFIERS or s.w[k].pos == "ADJ" or (s.w[k].tag in ("VBN", "VBG") and (s.w[k].dep == "amod" or (  # "two whining toddlers"
-                    k + 1 < s.n and s.w[k + 1].tag == "NNS" and self.is_person_noun(k + 1)))) \
+                    k + 1 < s.n and s.w[k + 1].tag == "NNS" and self.is_person_noun(k + 1) and s.w[k].dep != "prep"))) \
                     or (k > j and adverb_before_participle(s, k - 1, self.is_person_noun)) \
                     or (s.w[k].pos == "PROPN" and s.w[k].text.islower() and k + 1 < s.n and s.w[k + 1].pos == "ADJ"):
                 k += 1  # "tired old patients", "two lost children", "waiting visitors"; "a tipsy first-year": no name

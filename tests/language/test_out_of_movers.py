@@ -33,3 +33,13 @@ def test_out_of_breath_is_no_going_out():
 def test_an_unknown_verb_out_a_door_goes_through_it(world, sentence, door):
     group = read_prompt(sentence, load_world(world)).groups[0]
     assert (group.intent, group.destination) == ("walk", door)
+
+
+def test_a_chore_out_a_room_stays_there():
+    group = read_prompt("Two cleaners are mopping out the kitchen.", load_world("office")).groups[0]
+    assert (group.intent, group.location) == ("wait", "kitchen")
+
+
+def test_people_said_with_including_are_members_not_a_group():
+    groups = read_prompt("A family of five including two grandparents waits at gate A1.", load_world("airport")).groups
+    assert [(g.label, g.count.value) for g in groups] == [("family", 5)]
