@@ -132,6 +132,7 @@ from grove_tui.language.placed_with import as_placing_clause
 from grove_tui.language.model import (COUNT_KINDS, INTENTS, ROBOT_INTERACTIONS, Count, FieldConfidence,
                                       GroupReading, PromptReading, RobotReading, effective_counts)
 from grove_tui.language.parser import parse
+from grove_tui.language.chat_headings import without_vehicle_headings
 from grove_tui.language.passive_escort import to_active
 from grove_tui.language.passive_order import in_said_order
 from grove_tui.language.passive_late_agents import late_agents_to_active
@@ -195,7 +196,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     """The groups of people a prompt describes and what it asks of the robot, in the world's own
     place names (see the module doc)."""
     typed = " ".join((prompt or "").split())
-    text = without_fronted_lead_times(normalise(with_chat_place_tallies(typed, place_index(world))))  # "conference rm x3": 3 people in it  # "Ten minutes ahead of the late shift, ...": when, no ten of a shift
+    text = without_fronted_lead_times(normalise(with_chat_place_tallies(without_vehicle_headings(typed), place_index(world))))  # "conference rm x3": 3 people in it  # "Ten minutes ahead of the late shift, ...": when, no ten of a shift
     if not text:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
