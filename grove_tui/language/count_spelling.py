@@ -1,5 +1,5 @@
 """Misspelt words of a count said with "of" ("a coupel of guards", "a cuple of porters", "a handfull of
-kids", "a coupla nurses"), put right before the prompt is parsed. The reader knew no such word, took
+kids", "a coupla nurses", "a familly of four"), put right before the prompt is parsed. The reader knew no such word, took
 "a coupel" for one person, and the group counted one where the sentence says two. Only after "a"
 and before "of" (the words' own frame), only a word one edit from the count's word, and never a real
 English word ("a pail of water" stays)."""
@@ -11,7 +11,9 @@ import re
 from grove_tui.language.parser import known_word
 
 # The count words said as "a ... of": the reader reads each once spelt right.
-_COUNT_WORDS = ("couple", "handful", "dozen", "pair", "group", "bunch", "crowd", "gaggle", "trio", "team")
+_COUNT_WORDS = ("couple", "handful", "dozen", "pair", "group", "bunch", "crowd", "gaggle", "trio", "team",
+                # collectives whose "of" gives their size ("a familly of four", "a partty of six")
+                "family", "party", "squad", "horde", "throng", "army")
 _OF_FRAME = re.compile(r"\b([Aa])\s+([a-z]{3,9})\s+of\b")
 # Chat's run-together "couple of" ("a coupla nurses", "a cuppla guards").
 _COUPLA = re.compile(r"\b([Aa])\s+(?:coupla|cupla|cuppla|couplea|coupl)\b(?!\s+of\b)")

@@ -57,7 +57,7 @@ BARE_PLURAL_RANGE = (3, 6)  # "visitors walk to the ward": some visitors, not no
 # Collective nouns: a size when the prompt gives none, and whether the members move together.
 IMPLIED_RANGES: dict[str, tuple[int, int]] = {
     "couple": (2, 2), "pair": (2, 2), "family": (3, 4), "group": (3, 5), "party": (3, 5), "team": (3, 6),
-    "squad": (3, 6), "crowd": (15, 30), "throng": (15, 30), "horde": (15, 30), "swarm": (15, 30), "stream": (10, 25), "flood": (15, 30), "gaggle": (5, 12), "flock": (8, 20), "herd": (8, 20), "mob": (8, 20), "trickle": (3, 8), "bunch": (3, 5), "circle": (3, 5), "gang": (3, 5), "trio": (3, 3), "jury": (12, 12), "triplet": (3, 3),
+    "squad": (3, 6), "crowd": (15, 30), "throng": (15, 30), "horde": (15, 30), "army": (20, 50), "legion": (20, 50), "swarm": (15, 30), "stream": (10, 25), "flood": (15, 30), "gaggle": (5, 12), "flock": (8, 20), "herd": (8, 20), "mob": (8, 20), "trickle": (3, 8), "bunch": (3, 5), "circle": (3, 5), "gang": (3, 5), "trio": (3, 3), "jury": (12, 12), "triplet": (3, 3),
     "duo": (2, 2), "class": (10, 20), "tour": (6, 12), "queue": (4, 8), "line": (4, 8), "delegation": (3, 6), "twin": (2, 2), "quartet": (4, 4), "quintet": (5, 5), "twosome": (2, 2), "foursome": (4, 4), "sextet": (6, 6),
     # what a vehicle holds ("a coachload of pensioners", "a minibus of pupils" is read as a place)
     "coachload": (30, 50), "busload": (30, 50), "vanload": (5, 10), "carload": (3, 5), "boatload": (20, 40),
@@ -85,7 +85,7 @@ FAMILY_PLURALS: dict[str, tuple[int, int]] = {"parent": (2, 2), "grandparent": (
                                              "newlywed": (2, 2), "honeymooner": (2, 2)}
 COUPLE_PLURALS = frozenset({"newlywed", "honeymooner"})  # "the newlyweds": a couple, together
 # Collectives that, with "of" and people, are only a vague quantity ("a crowd of visitors").
-QUANTIFYING_COLLECTIVES = frozenset({"crowd", "throng", "horde", "swarm", "stream", "flood", "gaggle", "flock", "herd", "mob", "trickle"})
+QUANTIFYING_COLLECTIVES = frozenset({"crowd", "throng", "horde", "army", "legion", "swarm", "stream", "flood", "gaggle", "flock", "herd", "mob", "trickle"})
 TOGETHER_COLLECTIVES = frozenset({"couple", "pair", "family", "group", "party", "team", "bunch", "circle", "gang",
                                   "trio", "duo", "quartet", "quintet", "twosome", "foursome", "sextet", "class", "tour", "delegation", "twin", "triplet", "coachload", "busload",
                                   "vanload", "carload", "boatload", "planeload", "minibusload", "trainload", "crew",

@@ -9,7 +9,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.robot_escorts import escorts_to_a_place
 from grove_tui.language.aside_movers import aside_leader
 from grove_tui.language.carried_things import collective_of_things, counted_things
-from grove_tui.language.caused_motion import moves_along, route_after
+from grove_tui.language.caused_motion import moves_along, route_after, taking_verb
 from grove_tui.language.moved_pronouns import moved_pronoun
 from grove_tui.language.owned_rides import own_ride
 from grove_tui.language.titled_couples import couple_end
@@ -91,7 +91,10 @@ class PeopleObjects:
         if moved_pronoun(s, at) or own_ride(s, at) is not None or ((couple := couple_end(s, at)) is not None and (leading or route_after(s, couple))):
             return True  # "Mr Ahmed's son wheels him from ...", "escorts Mr and Mrs Obi from ...": taken along
         if not leading:  # "a nurse trundles a patient out of X-ray": taken along a route
-            return head is not None and moves_along(s, p, head)
+            if head is not None and moves_along(s, p, head):
+                return True
+            ridden = self.carried_owner(at)  # "trundles Mr Lee's wheelchair out of ward A": Mr Lee moved
+            return ridden is not None and taking_verb(s, p) and route_after(s, ridden[1])
         if counted_things(s, self.people, p, q, head) or collective_of_things(s, self.people, p, head):
             return False  # "takes a handful of used mirrors to ...", "brings a bunch of flowers": things carried
         return head is not None or self.carried_owner(at) is not None \
@@ -105,6 +108,8 @@ class PeopleObjects:
         while k < s.n and s.w[k].pos == "ADJ" and not self.people.is_person_noun(k):
             k += 1
         named = s.w[k].pos == "PROPN" and s.w[k].text[:1].isupper()  # "Alastair's wheelchair"
+        while named and k + 1 < s.n and s.w[k + 1].pos == "PROPN" and s.w[k + 1].text[:1].isupper():
+            k += 1  # "Mr Lee's bed", "Edith Baxter's wheelchair": the name's last word owns it
         if k + 2 >= s.n or not (self.people.is_person_noun(k) or named) or s.low[k + 1] not in ("'s", "’s", "'", "s'"):
             return None
         thing = k + 2

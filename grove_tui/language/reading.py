@@ -132,6 +132,8 @@ from grove_tui.language.placed_with import as_placing_clause
 from grove_tui.language.model import (COUNT_KINDS, INTENTS, ROBOT_INTERACTIONS, Count, FieldConfidence,
                                       GroupReading, PromptReading, RobotReading, effective_counts)
 from grove_tui.language.parser import parse
+from grove_tui.language.role_leads import with_role_leads
+from grove_tui.language.chat_headings import without_vehicle_headings
 from grove_tui.language.passive_escort import to_active
 from grove_tui.language.passive_order import in_said_order
 from grove_tui.language.passive_late_agents import late_agents_to_active
@@ -195,7 +197,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     """The groups of people a prompt describes and what it asks of the robot, in the world's own
     place names (see the module doc)."""
     typed = " ".join((prompt or "").split())
-    text = without_fronted_lead_times(normalise(with_chat_place_tallies(typed, place_index(world))))  # "conference rm x3": 3 people in it  # "Ten minutes ahead of the late shift, ...": when, no ten of a shift
+    text = without_fronted_lead_times(normalise(with_chat_place_tallies(without_vehicle_headings(typed), place_index(world))))  # "conference rm x3": 3 people in it  # "Ten minutes ahead of the late shift, ...": when, no ten of a shift
     if not text:
         return PromptReading(typed, (), problems=(NO_WORDS,) if typed else ())
     index = place_index(world)
@@ -235,7 +237,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = as_taken_along(without_held_hands(text))  # "links arms with Gramps and walks him": walks Gramps; "takes Edith arm in arm out of X": "takes Edith out of X"
     text = without_past_drills(with_fronted_ing_times(as_arm_escort(with_mid_events(text))))  # "gives Al her arm to X": walks Al; "after a drill": over
     text = with_plain_parts(as_passed_checkpoints(text))  # "clears customs and heads": passes through; "one end of the bar": the end of it
-    text = with_collective_roles(text)  # "the night shift boss": "the night-shift boss", one person
+    text = with_role_leads(with_collective_roles(text))  # "the night shift boss": "the night-shift boss", one person
     text = without_counted_loads(text)  # "a driver with two crates of milk waits": "a driver waits"
     text = with_little_ones(with_described_youngest(text))  # "leads the little one": "the little child"
     text = with_fronted_size_parts(with_fronted_whole_articles(text))  # "Of nine potters ..., a trio": "Of the nine ..."; "Of the twelve in X, a trio are called": "three of them"
