@@ -62,11 +62,16 @@ _NOT_CONTENT = frozenset("where you people they we someone somebody one who that
                          "there".split())
 
 
+def content_words(activity: str) -> set[str]:
+    """The activity's own words, as lemmas: "where you develop film" is {"develop", "film"}."""
+    return {verb_lemma(lemma(w)) for w in re.findall(r"[a-z]+", activity.lower()) if w not in _NOT_CONTENT}
+
+
 def says_it(activity: str, description: str) -> float:
     """The bonus of a description holding the activity's own words: at least two of them, or all."""
     if not description:
         return 0.0
-    content = {verb_lemma(lemma(w)) for w in re.findall(r"[a-z]+", activity.lower()) if w not in _NOT_CONTENT}
+    content = content_words(activity)
     said = {verb_lemma(lemma(w)) for w in re.findall(r"[a-z]+", description.lower())}
     shared = len(content & said)
     return DESCRIPTION_SAYS_IT if content and (shared >= 2 or shared == len(content)) else 0.0

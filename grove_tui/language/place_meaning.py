@@ -10,6 +10,7 @@ from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.activity_rooms import room_saying_it
+from grove_tui.language.activity_verbs import room_saying_words
 from grove_tui.language.bare_alias_kinds import other_kind_of_room
 from grove_tui.language.boarding import boarding_place
 from grove_tui.language.clause_objects import joins_listed_things, room_of_listed
@@ -249,6 +250,10 @@ class PlaceMeaning:
             meant = both
         if meant is None and s.low[j] == "where":
             meant = self._by_meaning([*phrase, *s.low[j:end]], lemmas, accept=MEANING_DESCRIBED, margin=MEANING_MARGIN)
+        if meant is not None and meant[1] < 0.6 and meant[0].kind == "zone" and \
+                (said := room_saying_words(s.index, activity, meant[0], kinds)) is not None:
+            # "the room where film gets developed": the darkroom, whose "developing sinks" say it
+            meant = (said, meant[1], f"'{activity}' is said in the words of {said.name}", ())
         return meant if meant is not None or head not in _ANY_PLACE else room_doing_it(s.index, activity)
 
     def _alike(self, one: str, other: str) -> bool:
