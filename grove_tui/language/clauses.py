@@ -501,8 +501,7 @@ class Clauses(ClauseCues):
                 candidates.append((i, phrasal[1], phrasal[0][0]))
                 continue
             if i in used or named_thing(s, i) or any(p.index < i < p.end for p in c.places) or \
-                    (s.w[i].pos == "NOUN" and (s.w[i].dep == "compound" and s.w[i].head > i or
-                                               s.w[i].dep in ("dobj", "pobj", "conj") and  # "the staff lounge"
+                    (s.w[i].pos == "NOUN" and (s.w[i].dep == "compound" and s.w[i].head > i or s.w[i].dep == "dobj" and
                                                s.w[i - 1].dep == "compound" and s.verb(s.w[i].head) not in lx.SCENE_VERBS)):
                 continue
             if thing_adjective(s, i) or contents_of_thing(s, i):
