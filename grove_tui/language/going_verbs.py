@@ -70,8 +70,9 @@ def goes_to_after(s: Sentence, i: int) -> bool:
     return k < s.n and s.low[k] in _TO and not s.verb_follows(k + 1)
 
 
-# Prepositions of the way taken before where one goes ("ambles down the central aisle to the loading bay").
-_WAYS = frozenset("down along through across up past via".split())
+# Prepositions of the way taken before where one goes ("ambles down the central aisle to the loading bay"),
+# and "from", where one sets off ("ambles from the market stalls to the fountain": a walk, issue 29).
+_WAYS = frozenset("down along through across up past via from".split())
 
 
 def _past_a_way(s: Sentence, k: int) -> int:

@@ -54,6 +54,8 @@ MORE_PHRASAL_INTENTS: dict[tuple[str, ...], str] = {
     ("kill", "time"): "wait", ("take", "a", "seat"): "wait", ("grab", "a", "seat"): "wait",
     ("take", "a", "breather"): "wait", ("sit", "about"): "wait", ("sit", "around"): "wait",
     ("stand", "about"): "wait", ("stand", "round"): "wait",
+    # "duck out of the lounge for a coffee", "ducks into the shop": going, not dodging (issue 29)
+    **{("duck", way): "walk" for way in ("out", "into", "in", "across", "over", "down", "up", "round", "back")},
 }
 # Leaving phrases first: "make a run for it" is a whole phrase before the lexicon's "make a run".
 PHRASAL_INTENTS: dict[tuple[str, ...], str] = {**LEAVING_PHRASES, **lx.PHRASAL_INTENTS, **MORE_PHRASAL_INTENTS,
