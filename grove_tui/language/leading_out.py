@@ -38,6 +38,6 @@ def leads_out(s: Sentence, start: int) -> bool:
 
 def goes_out_by(c: Clause) -> bool:
     """Whether a clause with a verb of its own that gives no intent goes out of a place or out a door (module
-    doc); "mucking out the goat pen" (out a zone) is a chore there."""
+    doc); "mucking out the goat pen" (out a zone, or a door it was matched to but not said) is a chore there."""
     return c.has_action and any(p.prep == "from" and p.out_of or p.prep == "out" and p.match is not None
-                                and p.match.kind == "door" for p in c.places)
+                                and p.match.kind == "door" and bool(set(p.words) & lx.DOOR_WORDS) for p in c.places)
