@@ -11,6 +11,7 @@ import re
 from collections.abc import Sequence
 from dataclasses import replace
 
+from grove_tui.language.fronted_surprise import sentence_after
 from grove_tui.language.model import GroupReading
 
 _FRIGHTS = ("spooked|startled|rattled|frightened|scared|alarmed|unnerved|terrified|petrified|panicked|shaken|"
@@ -22,16 +23,12 @@ _FRONTED = re.compile(r"(?:^|[.!?;]\s+)(?:(?:a\s+(?:bit|little)|rather|quite|sli
 _MOVES_ON = frozenset({None, "avoid"})
 
 
-def _sentence_after(prompt: str, start: int) -> str:
-    end = re.search(r"[.!?;](?:\s|$)", prompt[start:])
-    return prompt[start:start + end.start()] if end else prompt[start:]
-
 
 def frightened_by_fronted_clause(prompt: str, groups: Sequence[GroupReading]) -> tuple[GroupReading, ...]:
     """The subject after a fronted fright with the robot's clause, avoiding it, Scared (module doc)."""
     out = list(groups)
     for m in _FRONTED.finditer(prompt):
-        sentence = _sentence_after(prompt, m.end()).lower()
+        sentence = sentence_after(prompt, m.end()).lower()
         said = [k for k, g in enumerate(out) if g.text and g.text.lower() in sentence]
         if not said:
             continue

@@ -22,7 +22,8 @@ _FRIGHT = re.compile(r"\b(?:fright|terror|fear|panic|horror|dread|terrified|petr
                      re.I)
 
 
-def _sentence_after(prompt: str, start: int) -> str:
+def sentence_after(prompt: str, start: int) -> str:
+    """The rest of the sentence from `start` (to its stop, semicolon or the end)."""
     end = re.search(r"[.!?;](?:\s|$)", prompt[start:])
     return prompt[start:start + end.start()] if end else prompt[start:]
 
@@ -31,7 +32,7 @@ def surprised_when_fronted(prompt: str, groups: Sequence[GroupReading]) -> tuple
     """The groups avoiding the robot after a fronted word of surprise, Surprised (module doc)."""
     out = list(groups)
     for m in _FRONTED.finditer(prompt):
-        sentence = _sentence_after(prompt, m.end())
+        sentence = sentence_after(prompt, m.end())
         if _FRIGHT.search(sentence):
             continue
         reacting = [k for k, g in enumerate(out) if g.robot_interaction is not None]

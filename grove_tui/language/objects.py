@@ -107,6 +107,8 @@ class PeopleObjects:
         k = s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS | {"his", "her", "their", "my", "our"})
         while k < s.n and s.w[k].pos == "ADJ" and not self.people.is_person_noun(k):
             k += 1
+        if k >= s.n:
+            return None  # "... and ten tourists follow her": nothing after
         named = s.w[k].pos == "PROPN" and s.w[k].text[:1].isupper()  # "Alastair's wheelchair"
         while named and k + 1 < s.n and s.w[k + 1].pos == "PROPN" and s.w[k + 1].text[:1].isupper():
             k += 1  # "Mr Lee's bed", "Edith Baxter's wheelchair": the name's last word owns it

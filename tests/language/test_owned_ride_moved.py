@@ -26,3 +26,11 @@ def test_the_owner_of_the_ride_goes_along(read, world, prompt, start, destinatio
 def test_a_trolley_of_ones_own_moves_nobody(read):
     (nurse,) = read("hospital", "A nurse trundles her trolley from ward A to the pharmacy.").groups
     assert nurse.destination == "pharmacy"
+
+
+@pytest.mark.parametrize("sentence", [
+    "A guide hurries from the entrance hall to the Egyptian gallery and ten tourists follow her",
+    "Two nurses walk to the pharmacy and a porter follows them",
+])
+def test_a_sentence_ending_on_its_object_is_read(read, sentence):
+    assert len(read("museum", sentence).groups) == 2
