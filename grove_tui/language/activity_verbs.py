@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Sequence
+from functools import lru_cache
 
 from grove_tui.language.place_described import content_words
 from grove_tui.language.places import PlaceIndex, PlaceMatch
@@ -27,6 +28,16 @@ def _words(text: str) -> set[str]:
     return {_stem(verb_lemma(lemma(w))) for w in re.findall(r"[a-z]+", text.lower())}
 
 
+@lru_cache(maxsize=64)  # one index per world: its rooms' words are read once, not at every such clause
+def _zone_words(index: PlaceIndex) -> dict[str, frozenset[str]]:
+    """Each zone's words: its own text and its fixtures' names and descriptions, stemmed."""
+    said: dict[str, set[str]] = {}
+    for e in index.entries:
+        if e.kind != "door":
+            said.setdefault(e.zone, set()).update(_words(e.description) | _words(" ".join(e.said)))
+    return {zone: frozenset(words) for zone, words in said.items()}
+
+
 def room_saying_words(index: PlaceIndex, activity: str, meant: PlaceMatch,
                       kinds: Sequence[str] | None) -> PlaceMatch | None:
     """The zone whose own text alone holds the most of the activity's words, when the place `meant`
@@ -34,12 +45,7 @@ def room_saying_words(index: PlaceIndex, activity: str, meant: PlaceMatch,
     content = {_stem(w) for w in content_words(activity)}
     if not content:
         return None
-    said: dict[str, set[str]] = {}
-    for e in index.entries:
-        if e.kind == "door":
-            continue
-        text = _words(e.description) | _words(" ".join(e.said))
-        said.setdefault(e.zone, set()).update(text)
+    said = _zone_words(index)
     allowed = set(kinds) if kinds is not None else None
     words = re.findall(r"[a-z]+", activity.lower())
     # the verb done there ("you wedge clay": "wedge") weighs more than the thing it is done to
@@ -49,7 +55,7 @@ def room_saying_words(index: PlaceIndex, activity: str, meant: PlaceMatch,
                      if allowed is None or zone in allowed), reverse=True)
     if not counts or counts[0][1] == 0 or (len(counts) > 1 and counts[1][:2] == counts[0][:2]):
         return None
-    mine = said.get(meant.zone, set())
+    mine = said.get(meant.zone, frozenset())
     if verb & mine or (not verb & said[counts[0][2]] and content & mine):
         return None
     zone = index.entry(counts[0][2])
