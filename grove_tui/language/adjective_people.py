@@ -1,7 +1,8 @@
 """Adjectives said as people, with no noun after them: "a drunk kicks the robot", "a regular sits at
 the bar", "a local asks the way" (one person), "the injured wait in triage", "the elderly rest in the
 lounge" (some people). The word is a person noun only where a noun would stand: after a
-determiner, with a verb, a preposition or the end after it ("a blind man" keeps its noun)."""
+determiner (describing words between: "an aggressive drunk"), with a verb, a preposition or the end
+after it ("a blind man" keeps its noun)."""
 
 from __future__ import annotations
 
@@ -24,7 +25,10 @@ def adjective_person(s: Sentence, i: int) -> bool:
     word = s.low[i]
     if i == 0 or (word not in SINGULAR_ADJECTIVE_PEOPLE and word not in PLURAL_ADJECTIVE_PEOPLE):
         return False
-    det = s.low[i - 1]
+    d = i - 1
+    while d > 0 and d > i - 4 and s.w[d].pos in ("ADJ", "ADV") and s.low[d] not in _SINGULAR_DETERMINERS:
+        d -= 1  # "an aggressive drunk", "the seriously injured": describing words before the adjective
+    det = s.low[d]
     if not (det in _SINGULAR_DETERMINERS and word in SINGULAR_ADJECTIVE_PEOPLE or
             det == "the" and word in PLURAL_ADJECTIVE_PEOPLE):
         return False

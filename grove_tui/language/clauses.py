@@ -82,6 +82,10 @@ class Clause:
     avoid: list[str] = field(default_factory=list)  # places said not to be used ("not the main doors")
 
 
+# Prepositions of where someone settles or hides: after leaving, the place they go to.
+_SETTLED_AT = frozenset({"at", "on", "in", "obj:at", "under", "behind", "beneath"})
+
+
 @dataclass
 class _Scan:
     """The state of one clause's phrase-by-phrase scan."""
@@ -539,8 +543,7 @@ class Clauses(ClauseCues):
             return "walk", came[2], came[0]
         if (left := settled_after_leaving(s, candidates)) is not None:  # "head out of X and flop onto the couch"
             sat = settled_at(s, candidates)
-            c.places = [replace(p, prep="to") if p.prep in ("at", "on", "in", "obj:at") and p.index > sat else p
-                        for p in c.places]
+            c.places = [replace(p, prep="to") if p.prep in _SETTLED_AT and p.index > sat else p for p in c.places]
             return "walk", left[2], left[0]
         for wanted in ("queue", "converse", "wait", "wander", "follow", "evacuate"):
             if wanted in kinds:

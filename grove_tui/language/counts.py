@@ -170,7 +170,8 @@ def quantifier(s: Sentence, j: int) -> Quantifier | None:
         return Quantifier(max(1, math.floor(value + 0.5)), "approximate", after, max(1, math.ceil(value)),
                           max(1, math.floor(value)))
     num = number_at(s, k)
-    if num is not None and num[1] < s.n and low[num[1]] in lx.DETERMINERS and not approx:
+    if num is not None and num[1] < s.n and low[num[1]] in lx.DETERMINERS and not approx and \
+            not (num[1] + 1 < s.n and s.joins(num[1] + 1)):  # "Two A-level students": a word, no "a"
         return None  # "At nine the porters come in": a time, then the phrase; a number counts no "the ..."
     if num is not None and num[1] < s.n and low[num[1]] in ("am", "pm", "a.m", "p.m", "o'clock", "oclock") and not approx:
         return None  # "the 9 am class", "the 2 pm tour": a time, no count

@@ -41,8 +41,12 @@ _FRONTED = re.compile(
 def with_fronted_phrase_commas(text: str) -> str:
     """The text with a comma after a fronted "During the X" that runs into the people after it (module doc)."""
     def comma(m: re.Match[str]) -> str:
-        words = m.group("words").lower().split()
-        if any(w in _NOT_IN_TIME for w in words):
+        said = m.group("words").split()
+        if any(w.lower() in _NOT_IN_TIME for w in said):
             return m.group(0)
+        name = next((k for k in range(1, len(said)) if said[k][0].isupper() and said[k - 1][0].islower()), None)
+        if name is not None:  # "After the argument Grandad stomps out the ...": the time ends before the name
+            opening = m.group(2)[:m.start("words") - m.start(2)]
+            return f"{m.group(1)}{opening}{' '.join(said[:name])}, {' '.join(said[name:])}"
         return f"{m.group(1)}{m.group(2)},"
     return _FRONTED.sub(comma, text)

@@ -78,8 +78,8 @@ class Sentence:
         return v
 
     def skip(self, j: int, words: set[str] | frozenset[str]) -> int:
-        while j < self.n and self.low[j] in words:
-            j += 1
+        while j < self.n and self.low[j] in words and not (j + 1 < self.n and self.joins(j + 1)):
+            j += 1  # "an A-list guest": the "A" of "A-list" is a word, not a second article
         return j
 
     def span(self, a: int, b: int) -> str:
