@@ -37,6 +37,7 @@ from grove_tui.language.feeling_adjectives import coloured_by_feeling
 from grove_tui.language.feeling_phrases import feelings_said_outright
 from grove_tui.language.fronted_fright_clauses import frightened_by_fronted_clause
 from grove_tui.language.fronted_surprise import surprised_when_fronted
+from grove_tui.language.answered_alarms import answering_alarms
 from grove_tui.language.leisure_places import leisure_places
 from grove_tui.language.model import PromptReading
 from grove_tui.language.pacing_between import pacing_between
@@ -67,6 +68,7 @@ def with_clause_passes(prompt: str, index: PlaceIndex, reading: PromptReading) -
     groups = angry_approach(prompt, groups)  # "Red-faced, a dealer storms up to the robot": a threat
     groups = stepped_aside_in_place(groups)  # "an intern at the printer steps back": stays at the printer
     groups = at_their_workplace(index, groups)  # "the cloakroom attendant hangs up coats": at the cloakroom
+    groups = answering_alarms(index, groups)  # "hearing the alarm, a lifeguard hurries to first aid": walks
     unknown = tuple(dict.fromkeys((*reading.unknown_places, *searched_unknown(prompt, index))))
     events = occasions(prompt)
     unknown = tuple(u for u in unknown if not set(u.lower().split()[-1:]) & events)

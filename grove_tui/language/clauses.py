@@ -27,6 +27,7 @@ from grove_tui.language.going_idioms import straight_for
 from grove_tui.language.going_verbs import goes_to_after, named_thing, obliged_to, sets_off_for
 from grove_tui.language.pronoun_places import searched_or_queued_for
 from grove_tui.language.purpose_with import with_object_end
+from grove_tui.language.made_things import made_thing_then_place
 from grove_tui.language.readied_for import readied_for
 from grove_tui.language.purpose_after_for import purpose_after_for_place
 from grove_tui.language.purpose_after_place import purpose_after_destination
@@ -410,7 +411,7 @@ class Clauses(ClauseCues):
                 and (nxt in lx.DETERMINERS or self.places.names_place(obj)) and not s.hyphen_inside(i - 1)
                 and not (i > 0 and s.low[i - 1] == "with")  # "with hired clubs": a modifier of what they hold
                 and not s.after_determiner(i) and (self.places.names_place(s.skip(obj, lx.DETERMINERS))
-                                                   or nxt in _OWNERS)):
+                                                   or nxt in _OWNERS) and not made_thing_then_place(s, obj)):
             # "a cleaner sweeps platform 2", "mops the corridor", "locks her office", "closes up
             # reception": the object of a verb the lexicon lacks (one's own room by its kind)
             place = self.places.phrase(obj, "obj:at", i, record_unknown=False)

@@ -15,8 +15,9 @@ and, round 23, a span of the event ("in the interval", "during the break") and w
 
 from __future__ import annotations
 
-__all__ = ["caught_by", "infinitive_verb", "no_place_said"]
+__all__ = ["caught_by", "heading_adverb", "infinitive_verb", "no_place_said"]
 
+from grove_tui.language.heading_adverbs import heading_adverb
 from grove_tui.language.infinitive_verbs import infinitive_verb
 from grove_tui.language import lexicon as lx
 from grove_tui.language.activity_nouns import PAUSE_NOUNS

@@ -39,7 +39,7 @@ from grove_tui.language.place_possessed import owned_places
 from grove_tui.language.its_places import its_place
 from grove_tui.language.movers import carried_in, taken_in
 from grove_tui.language.on_the_way import on_ones_way
-from grove_tui.language.not_places import caught_by, infinitive_verb, no_place_said
+from grove_tui.language.not_places import caught_by, heading_adverb, infinitive_verb, no_place_said
 from grove_tui.language.stage_parts import stage_part
 from grove_tui.language.bare_alias_kinds import by_bare_alias, other_kind_of_room
 from grove_tui.language.bare_place_names import bare_place_name
@@ -365,9 +365,9 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
                 phrase.append(w if w.isdigit() else str(lx.UNITS[w]))
                 j += 1
                 continue
-            if s.w[j].pos in ("ADV", "PRON", "ADP", "CCONJ", "SCONJ", "PART") and not s.index.knows(lemma(w)) \
-                    and not after_hyphen:
-                break
+            if s.w[j].pos in ("ADV", "PRON", "ADP", "CCONJ", "SCONJ", "PART") and not after_hyphen and (
+                    not s.index.knows(lemma(w)) or heading_adverb(s, phrase, j)):
+                break  # "from the recital hall back to the foyer": "back" heads on (no "back row")
             phrase.append(w)
             j += 1
             if s.w[j - 1].text.endswith(".") and len(s.w[j - 1].text) > 1:

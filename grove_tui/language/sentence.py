@@ -21,6 +21,7 @@ from grove_tui.language.bare_place_names import bare_place_name
 from grove_tui.language.handled_fixtures import handled_at
 from grove_tui.language.hyphened_nouns import hyphened_particle_noun
 from grove_tui.language.parser import Word
+from grove_tui.language.particle_purposes import particle_verb
 from grove_tui.language.particle_names import known_compound
 from grove_tui.language.places import PlaceIndex
 from grove_tui.language.purpose_things import things_end
@@ -208,7 +209,8 @@ class Sentence:
             return False  # "to gate C4": a place word with its number, though the parser calls "gate" a verb
             # (but "to book a study room": a verb and its object)
         return self.w[k].tag == "VB" or self.w[k].pos == "VERB" or verb_lemma(w) != w or w in (
-            "register", "check", "pick", "buy", "pay", "collect", "see", "get", "eat", "drink", "use")
+            "register", "check", "pick", "buy", "pay", "collect", "see", "get", "eat", "drink", "use") or \
+            particle_verb(self.low, k, self.index.knows, lemma)  # "to hand in their coats"
 
     def around_follows(self, i: int) -> bool:
         return i + 1 < self.n and self.low[i + 1] in ("around", "about")
