@@ -39,7 +39,7 @@ from grove_tui.language.place_possessed import owned_places
 from grove_tui.language.its_places import its_place
 from grove_tui.language.movers import carried_in, taken_in
 from grove_tui.language.on_the_way import on_ones_way
-from grove_tui.language.not_places import caught_by, infinitive_verb, no_place_said
+from grove_tui.language.not_places import infinitive_verb, no_place_said, not_a_place
 from grove_tui.language.stage_parts import stage_part
 from grove_tui.language.bare_alias_kinds import by_bare_alias, other_kind_of_room
 from grove_tui.language.bare_place_names import bare_place_name
@@ -112,7 +112,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if k in self.refused:
             return None  # "the wall" of "the hole in the wall", refused as one name
         record_unknown = record_unknown and prep != "between" and not no_place_said(s, k, prep, at)  # a time; a cause
-        if on_ones_way(s, k, prep, at) or ridden_on(s, k, prep, at) or caught_by(s, k, prep, at) or is_idiom_phrase(s, k, prep, at) and not self.names_place(k):
+        if on_ones_way(s, k, prep, at) or ridden_on(s, k, prep, at) or not_a_place(s, k, prep, at) or is_idiom_phrase(s, k, prep, at) and not self.names_place(k):
             return None  # "argue about a bug", "bursts into tears": a topic or a feeling, no place
         if k < s.n and (low[k] in ("where", "wherever", "upstairs", "downstairs") or may_be_place(s, k, prep, at)):
             return self.where_place(k, prep, at, mentioned)
