@@ -219,8 +219,9 @@ class Sentence:
         while j < self.n and j < k + 6:
             w = self.low[j]
             if (self.is_punct(j) and not self.joins(j)) or w in lx.CLAUSE_STARTERS or \
-                    (w in lx.PLACE_PREPOSITIONS and j > k) or w == "for":
-                break
+                    (w in lx.PLACE_PREPOSITIONS and j > k) or w == "for" or j > k and any(
+                        tuple(self.low[j:j + len(p)]) == p for p in lx.NEGATED_PLACE_PHRASES):
+                break  # "for bacon rolls rather than the staff lounge": the purpose ends before the place refused
             if not allow_objects and j > k and verb_lemma(w) in lx.INTENT_VERBS and self.w[j].pos == "VERB":
                 break
             j += 1
