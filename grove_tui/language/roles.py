@@ -196,8 +196,8 @@ def role_of(index: PlaceIndex, p: Place, verb: str, verb_index: int | None, stat
     if prep == "from" and p.written == "from" and stationary and intent in lx.STATIONARY_INTENTS and \
             (verb_index is None or p.index > verb_index):  # not a fronted "From the pharmacy, two wait"
         return "location"  # "a guard watches them from the supermarket doors": where the watcher stands
-    if prep in ("from", "obj:start"):
-        return "start"
+    if prep in ("from", "obj:start") or prep == "off" and not stationary:
+        return "start"  # "brings the washing in off the balcony": off it is where they set out (round 69)
     if prep in ("for", "purpose"):  # "head for the exit"; "to catch the train at platform 1"
         return "location" if stationary else "destination"
     if prep in ("to", "into", "towards", "toward", "onto", "obj:dest"):
