@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from grove_tui.language.place_ordinals import ordinal_place
 from grove_tui.language.places import PlaceMatch
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import phrase_lemmas
@@ -17,12 +18,16 @@ def fixture_of_room(s: Sentence, k: int, j: int) -> PlaceMatch | None:
     mark = next((x for x in range(k + 1, j) if s.low[x] in ("'s", "’s")), None)
     if mark is None:
         return None
-    room = s.index.match(phrase_lemmas(s.low[k:mark]))
+    said = phrase_lemmas(s.low[k:mark])
+    ranked = ordinal_place(s.index, said)  # "the fourth gate's seats": the fourth gate's (round 69)
+    room = ranked[0] if ranked is not None else s.index.match(said)
     thing = phrase_lemmas(s.low[mark + 1:j])
     if room is None or room.kind != "zone" or not thing:
         return None
     inside = [m for m in s.index.candidates(thing) if m.kind == "entity" and m.zone == room.name]
-    return inside[0] if inside else None
+    # the room said decides it (round 69): "the second platform's bench" is platform 2's, though its words
+    # are no whole name of the bench
+    return PlaceMatch(inside[0].name, "entity", room.name, 1.0, True) if inside else None
 
 
 def fixtures_as_room(s: Sentence, k: int, j: int, lemmas: Sequence[str], match: PlaceMatch | None) -> PlaceMatch | None:
