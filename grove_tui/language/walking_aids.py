@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.sentence import Sentence
-from grove_tui.language.tokens import lemma
+from grove_tui.language.tokens import lemma, verb_lemma
 
 # Heads that name a walking aid by themselves.
 _AIDS = frozenset("zimmer zimmers walker walkers rollator rollators crutch crutches wheelchair wheelchairs "
@@ -40,6 +40,10 @@ def walking_aid(s: Sentence, k: int, prep: str, at: int) -> bool:
         end += 1  # "a zimmer frame", "her old walking stick"
     if end == k:
         return False
+    for x in range(j, end - 1):
+        if (s.low[x] in _AIDS or s.low[x] in _SAID_AIDS) and _verb_like(s, x + 1):
+            end = x + 1  # "patients in wheelchairs queue at ...": the verb the parser took for a noun
+            break
     head = s.low[end - 1]
     if head in _AIDS:
         aid = head not in ("walker", "walkers") or s.low[at] != "in"
@@ -49,8 +53,15 @@ def walking_aid(s: Sentence, k: int, prep: str, at: int) -> bool:
     if not aid:
         return False
     if end < s.n and s.low[end].isalpha() and s.index.knows(lemma(s.low[end])) and \
-            s.w[end].pos in ("NOUN", "PROPN"):
+            s.w[end].pos in ("NOUN", "PROPN") and not _verb_like(s, end):
         return False  # "in the wheelchair bay": a place's own name goes on
     if s.low[at] == "in":
-        return s.w[at - 1].pos in ("NOUN", "PROPN", "PRON") or s.low[at - 1] in ("sits", "sat", "sitting", "seated")
+        return s.w[at - 1].pos in ("NOUN", "PROPN", "PRON") or s.lemma(at - 1) in lx.PERSON_NOUNS or \
+            s.low[at - 1] in ("sits", "sat", "sitting", "seated")
     return True
+
+
+def _verb_like(s: Sentence, i: int) -> bool:
+    """Whether word i is a verb, or a word the lexicon knows as a verb of what people do ("queue")."""
+    return i < s.n and (s.w[i].pos in ("VERB", "AUX") or lx.INTENT_VERBS.get(verb_lemma(s.low[i])) is not None
+                        or s.low[i] in ("line", "lined"))
