@@ -53,6 +53,7 @@ from grove_tui.language.verb_classes import around_after, phrasal_intent, takes_
 from grove_tui.language.wander_spots import (SPOT_KEEPING_VERBS, browsing_between_shops, chore_after_coming,
                                               thing_adjective, wandering_at_a_spot)
 from grove_tui.language.gerund_loads import gerund_load
+from grove_tui.language.purpose_places import place_after_purpose
 
 # Prepositions of the place where a purpose is done ("to catch the train at platform 1").
 _PURPOSE_PLACE_PREPOSITIONS = frozenset({"at", "in", "on", "inside", "by", "near", "from"})
@@ -310,6 +311,9 @@ class Clauses(ClauseCues):
                 (not self.people.is_person_noun(i - 1) or self._ends_a_named_place(scan, i)) and not (nxt in ("their", "his", "her") and i + 2 < s.n and s.low[i + 2] == "turn"):
             scan.c.purpose = scan.c.purpose or s.span(i, end - 1)
             self._take(scan, i, end)
+            if (at := place_after_purpose(s, i, end)) is not None and \
+                    (place := self.places.phrase(at + 1, "purpose", at)) is not None:
+                self._add_place(scan, place, at)  # "go for coffee in the café": where it is done
             return True
         return False
 
