@@ -29,7 +29,7 @@ from grove_tui.language.place_outside import zone_around
 from grove_tui.language.place_of_zone import exit_of_room_said, ones_of_zone, thing_of_zone_said, zone_then_thing
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at, informal_room
 from grove_tui.language.place_meaning import Decided, PlaceMeaning, gerund_room
-from grove_tui.language.named_owners import elided_owned, owned_by_name, owner_at
+from grove_tui.language.named_owners import elided_owned, owned_by_name, owner_at, said_owner_name
 from grove_tui.language.named_kinds import by_head_alone
 from grove_tui.language.sibling_kinds import sibling_kind
 from grove_tui.language.ridden_things import ridden_on
@@ -50,7 +50,7 @@ from grove_tui.language.room_fixtures import fixture_of_room, fixtures_as_room
 from grove_tui.language.room_numbers import bare_room_number
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.verb_after_place import verb_after_place
-from grove_tui.language.noun_heads import place_before_verb
+from grove_tui.language.noun_heads import hyphened_name_word, place_before_verb
 from grove_tui.language.tokens import lemma, name_tokens, phrase_lemmas, verb_lemma
 from grove_tui.language.to_things import to_a_thing_before
 
@@ -135,7 +135,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             j += 1
         j = self.past_part(j)
         if j == k and prep in ("in", "at", "to", "by", "on", "from", "about", "around") and j < s.n and \
-                not s.index.knows(lemma(low[j])) and "&" not in low[j] and not self.names_place(j) and not bare_place_name(low, j) and around(s.index, (lemma(low[j]),)) is None:  # "in A&E"; "at trackside": the track's
+                not s.index.knows(lemma(low[j])) and "&" not in low[j] and not self.names_place(j) and not bare_place_name(low, j) and around(s.index, (lemma(low[j]),)) is None and not said_owner_name(s, j):  # "in A&E"; "at trackside": the track's; "to Priya Shah's office"
             return None  # "in line", "at once", "on time": no determiner and no place word
         if prep in ("through", "over") and at >= 1 and lx.INTENT_VERBS.get(verb_lemma(low[at - 1])) == "converse" \
                 and not self.names_place(j):
@@ -199,7 +199,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if match is not None and not match.exact and lemmas and lemmas[-1] in lx.NON_PLACES and not tier_place(lemmas):
             return None  # "off the train": a word that names no place, though an alias shares it
         numbered = any(IDENTIFIER.fullmatch(t) and not t.isalpha() for t in lemmas)
-        if absent_kind(s.index, lemmas) is not None or by_head_alone(s.index, lemmas, match) or (owned is None and other_of_kind(
+        if absent_kind(s.index, lemmas) is not None or owned is None and by_head_alone(s.index, lemmas, match) or (owned is None and other_of_kind(
                 s.index, match, lemmas, setting_words(s, start, j, self.people.is_person_noun))):  # "the planetarium (room)", "the members' enclosure"
             numbered, match = True, None
         if match is not None and not self._identifiers_agree(lemmas, match):
@@ -345,8 +345,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             if phrase and not joined and (self._time_starts(j) or chat_ends_name(
                     s, j, phrase, self.whole_name(phrase))):
                 break  # "the coat counter b4 closing", "the lobby asap", "in lobby waitin 4 taxis": no more place
-            if w in lx.PLACE_PREPOSITIONS and not joined and not (phrase and s.index.knows(lemma(w))):
-                break
+            if w in lx.PLACE_PREPOSITIONS and not joined and not (phrase and s.index.knows(lemma(w))) and not hyphened_name_word(s, j):
+                break  # "the under-twos room": a preposition hyphened to a word of a name is one of its words
             after_hyphen, joined = joined, False
             if phrase and not after_hyphen and (self._verb_ends_name(phrase, j) or verb_after_place(s, phrase, j, self.whole_name)):
                 break  # "key-cutting kiosk": one name; "the knife-skills course sidles away": a verb
@@ -366,7 +366,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
                 j += 1
                 continue
             if s.w[j].pos in ("ADV", "PRON", "ADP", "CCONJ", "SCONJ", "PART") and not s.index.knows(lemma(w)) \
-                    and not after_hyphen:
+                    and not after_hyphen and not hyphened_name_word(s, j):
                 break
             phrase.append(w)
             j += 1
