@@ -46,7 +46,7 @@ from grove_tui.language.bare_place_names import bare_place_name
 from grove_tui.language.where_elsewhere import elsewhere
 from grove_tui.language.places import PlaceMatch
 from grove_tui.language.other_possessors import other_of_kind, setting_words
-from grove_tui.language.room_fixtures import fixture_of_room, fixtures_as_room
+from grove_tui.language.room_fixtures import fixture_of_room, fixtures_as_room, room_fixture_said
 from grove_tui.language.room_numbers import bare_room_number
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.verb_after_place import verb_after_place
@@ -168,7 +168,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         thing = match if match is not None and match.exact else around(s.index, lemmas) or match
         match = beside_thing(s.index, prep, thing)
         beside = match is not thing  # the room around the thing: decided, whoever stands there
-        match = fixture_of_room(s, k, j) or (match if prep == "on" else fixtures_as_room(s, k, j, lemmas, match))
+        match, said_before = room_fixture_said(s, k, j) or (fixture_of_room(s, k, j) or (match if prep == "on" else fixtures_as_room(s, k, j, lemmas, match)), said_before)
         possessive = k < s.n and low[k] in ("her", "his", "their", "my", "our", "its", "your")
         # "the kids' bed", "the director's desk": a person named as the owner inside the phrase
         named_owner = next((s.lemma(x) for x in range(k, j - 1) if low[x + 1] in ("'s", "'", "’s", "’")

@@ -50,3 +50,22 @@ def _of_kind(s: Sentence, name: str, head: str) -> bool:
     typed = any(head in t.split() for e in s.index.entries if e.kind == "entity" and entry is not None and
                 e.zone == entry.zone for t in e.types)  # the room has things of that type: by type alone
     return entry is not None and (any(head in t.split() for t in entry.types) or not typed and head in entry.tokens)
+
+
+def room_fixture_said(s: Sentence, k: int, j: int) -> tuple[PlaceMatch, tuple[PlaceMatch, float, str, tuple[str, ...]]] | None:
+    """fixture_of_room, decided (round 69), when the words before "'s" are a room's whole name or alias
+    and the room has one thing of the words after it ("the south concourse's bar" where other rooms have
+    bars too): the room said chooses, so meaning is not asked again; the match and its decision."""
+    mark = next((x for x in range(k + 1, j) if s.low[x] in ("'s", "’s")), None)
+    if mark is None:
+        return None
+    said = phrase_lemmas(s.low[k:mark])
+    room = s.index.match(said)
+    entry = s.index.entry(room.name) if room is not None and room.exact and room.kind == "zone" else None
+    if entry is None or tuple(said) not in entry.phrases:
+        return None  # "the women's toilet", "the manager's office": an owner, no room's name
+    inside = [m for m in s.index.candidates(phrase_lemmas(s.low[mark + 1:j])) if m.kind == "entity" and m.zone == room.name]
+    if not inside or len(inside) > 1 and inside[1].score >= inside[0].score - 1e-9:
+        return None  # "the food court's counter" of several counters there: not decided by the room
+    found = PlaceMatch(inside[0].name, "entity", room.name, 1.0, True)
+    return found, (found, 1.0, f"'{' '.join(s.low[k:j])}': the {found.name} of {room.name}, the room said", ())
