@@ -3,7 +3,8 @@ dozen under-fives play in the soft play", "two over-60s wait", "a few twenty-som
 plural noun for people no list has, and the parser splits it ("over", "-", "fifties"), so the count and
 the people were lost. Written before parsing as what the band says of them ("older people", "young
 children", "young people"), it is read as any counted plural. A band that names a club, class or
-session ("the over-60s club", "the under-12s team") is left as it is."""
+session ("the over-60s club", "the under-12s team") or a room kept for it ("the under-twos room") is
+left as it is."""
 
 from __future__ import annotations
 
@@ -23,7 +24,10 @@ _SOMETHINGS = re.compile(r"\b(?:twenty|thirty|forty|fifty)\s*-?\s*somethings\b",
 # Words after a band that make it the name of what they belong to or go to.
 _NAMED = frozenset("club clubs class classes session sessions group groups team teams squad squads swim night "
                    "nights morning mornings lunch lunches section league match game disco rail railcard "
-                   "discount rate ticket tickets".split())
+                   "discount rate ticket tickets "
+                   # a room or area kept for the band ("the under-twos room", "the under-fives area"; round 69)
+                   "room rooms area areas zone zones corner unit ward bay pool playground garden toilets "
+                   "loos changing nest den space".split())
 
 
 def _age(word: str) -> int | None:

@@ -53,6 +53,8 @@ from grove_tui.language.thing_clauses import a_things_verb
 from grove_tui.language.verb_classes import around_after, phrasal_intent, takes_a_way, verb_intent
 from grove_tui.language.wander_spots import (SPOT_KEEPING_VERBS, browsing_between_shops, chore_after_coming,
                                               thing_adjective, wandering_at_a_spot)
+from grove_tui.language.gerund_loads import gerund_load
+from grove_tui.language.purpose_places import place_after_purpose
 
 # Prepositions of the place where a purpose is done ("to catch the train at platform 1").
 _PURPOSE_PLACE_PREPOSITIONS = frozenset({"at", "in", "on", "inside", "by", "near", "from"})
@@ -310,6 +312,9 @@ class Clauses(ClauseCues):
                 (not self.people.is_person_noun(i - 1) or self._ends_a_named_place(scan, i)) and not (nxt in ("their", "his", "her") and i + 2 < s.n and s.low[i + 2] == "turn"):
             scan.c.purpose = scan.c.purpose or s.span(i, end - 1)
             self._take(scan, i, end)
+            if (at := place_after_purpose(s, i, end)) is not None and \
+                    (place := self.places.phrase(at + 1, "purpose", at)) is not None:
+                self._add_place(scan, place, at)  # "go for coffee in the café": where it is done
             return True
         return False
 
@@ -372,8 +377,8 @@ class Clauses(ClauseCues):
         s = self.s
         c = scan.c
         v = s.verb(i)
-        if thing_adjective(s, i):
-            return False  # "clean towels": a thing's adjective, no verb with a place for its object
+        if thing_adjective(s, i) or gerund_load(s, i):
+            return False  # "clean towels": a thing's adjective; "a basket of washing off the balcony": a load
         if v in lx.NEGATING_VERBS and (nxt in lx.DETERMINERS or self.places.names_place(i + 1)):
             # "skip the critical care and go to ...": a place they do not go to
             place = self.places.phrase(i + 1, "obj:at", i, record_unknown=False, mentioned=False)

@@ -33,3 +33,21 @@ def person_word_in_a_place_name(s: Sentence, at: int) -> bool:
         if before >= 0 and s.low[before] in lx.PLACE_PREPOSITIONS and in_a_place_name(s, start):
             return True
     return False
+
+
+def compound_place_refused(s: Sentence, at: int) -> bool:
+    """Whether the words at `at`, right after "rather than" or "instead of", are a place named with a word
+    for people as its modifier ("rather than the staff lounge", "instead of the kids' den") that the world
+    may lack (round 69): the parser makes the people word a compound of the noun after it, the object
+    of "than"/"of". No subject starts there, though the head is a verb too ("lounge")."""
+    if at < 2 or (s.low[at - 2], s.low[at - 1]) not in lx.NEGATED_PLACE_PHRASES:
+        return False
+    k = s.skip(at, lx.DETERMINERS)
+    while k + 1 < s.n and s.w[k].pos in ("NOUN", "PROPN", "ADJ") and s.w[k].dep in ("compound", "amod", "poss"):
+        nxt = k + 2 if s.low[k + 1] in ("'s", "’s", "'", "’") else k + 1
+        head = s.w[k].head
+        if nxt < s.n and head >= nxt and s.w[head].pos == "NOUN" and s.w[head].dep in ("pobj", "dobj", "obj") \
+                and s.w[head].head in (at - 1, at - 2):
+            return True  # "the staff lounge": "lounge" the object of "than", "staff" its modifier
+        k = nxt
+    return False

@@ -82,3 +82,33 @@ def named_room(s: Sentence, at: int, pronoun: str, heads: Sequence[str]) -> Plac
     if len(theirs) > 1:
         theirs = [e for e in theirs if any(h in e.tokens for h in heads)] or theirs
     return theirs[0] if len(theirs) == 1 else None
+
+
+def owned_by_name_said(s: Sentence, k: int, lemmas: Sequence[str]) -> Decided | None:
+    """The room a person's name and "'s" at word k names ("to Priya Shah's office", "Ms Shah's office",
+    "Sophie's cabin", round 69) when the world says whose it is only in its description: the one zone whose
+    description carries the name's last word said (else its first) and which is called by the head."""
+    names: list[str] = []
+    x = k
+    while x < s.n and s.w[x].text[:1].isupper() and s.w[x].text.isalpha() and s.low[x] not in _NOT_NAMES:
+        names.append(s.low[x].rstrip("."))
+        x += 1
+    if not names or x >= s.n or s.low[x] not in ("'s", "’s", "'", "’") or not lemmas:
+        return None
+    said = [w for w in names if w not in lx.TITLES and w not in _HIS | _HER]
+    for name in reversed(said):
+        e = owned_by_description(s.index.entries, name, lemmas[-1])
+        if e is not None:
+            return (PlaceMatch(e.name, e.kind, e.zone, 1.0, True), 0.85,
+                    f"'{' '.join(lemmas)}' of {' '.join(names)}, by the world's description: {e.name}", ())
+    return None
+
+
+def said_owner_name(s: Sentence, k: int) -> bool:
+    """Whether a person's name and "'s" start at word k, before the head of a room the world describes as
+    theirs ("Priya Shah's office"): a place phrase, though it opens with no determiner and no place word."""
+    x = k
+    while x < s.n and s.w[x].text[:1].isupper() and s.w[x].text.isalpha() and s.low[x] not in _NOT_NAMES:
+        x += 1
+    return k < x and x + 1 < s.n and s.low[x] in ("'s", "’s", "'", "’") and \
+        owned_by_name_said(s, k, (s.lemma(x + 1),)) is not None

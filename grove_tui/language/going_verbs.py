@@ -13,6 +13,7 @@ from __future__ import annotations
 from grove_tui.language import lexicon as lx
 from grove_tui.language.posture_verbs import posture_intent
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.taken_off import takes_a_thing_off
 from grove_tui.language.tokens import verb_lemma
 
 # Verbs of wandering the lexicon lacks ("mooch around the galleries").
@@ -30,8 +31,8 @@ def more_verb_intent(s: Sentence, i: int) -> str | None:
     v = s.verb(i)
     if v in MORE_WANDER_VERBS or s.low[i] in MORE_WANDER_VERBS:
         return "wander"
-    if v in THING_TAKING_VERBS and carries_a_thing_to(s, i):
-        return "walk"
+    if v in THING_TAKING_VERBS and (carries_a_thing_to(s, i) or takes_a_thing_off(s, i)):
+        return "walk"  # "takes the bins off the patio": from there (taken_off.py)
     return posture_intent(s, i)  # "sprawl across the sofas", "loll on the beanbags"
 
 

@@ -16,6 +16,7 @@ from grove_tui.language.pushed_things import as_pushing_verbs
 from grove_tui.language.till_words import with_till_nouns
 from grove_tui.language.worked_things import work_particles
 from grove_tui.language.walk_nouns import as_walk_verbs
+from grove_tui.language.idle_idioms import as_idle_verbs
 
 # One-word verbs of leaving (base forms): a walk.
 LEAVING_VERBS = frozenset("bail scarper skedaddle scram bolt vamoose decamp depart".split())
@@ -68,4 +69,4 @@ def as_verbs(words: list[Word]) -> list[Word]:
             prev = out[k - 1] if k > 0 else None
             if prev is not None and prev.dep == "compound" and prev.head == k:
                 out[k - 1] = replace(prev, dep=w.dep, head=w.head)  # "the lounge": the noun the verb was taken for
-    return as_walk_verbs(as_going_verbs(as_pushing_verbs(work_particles(bound_verbs(shutting_verbs(out))))))  # "mums wheel prams", "the toy store shuts and ...", "bound for Leeds queue at ..."
+    return as_idle_verbs(as_walk_verbs(as_going_verbs(as_pushing_verbs(work_particles(bound_verbs(shutting_verbs(out)))))))  # "a pair of teens mess about": a verb; "mums wheel prams", "the toy store shuts and ...", "bound for Leeds queue at ..."

@@ -20,7 +20,7 @@ from grove_tui.language.occasion_headings import without_heading
 from grove_tui.language.count_tails import after_apposed_count
 from grove_tui.language.collectives import Collectives, members_named
 from grove_tui.language.couple_words import bare_couple
-from grove_tui.language.cue_in_names import person_word_in_a_place_name
+from grove_tui.language.cue_in_names import compound_place_refused, person_word_in_a_place_name
 from grove_tui.language.counts import Quantifier, count_of, negative_at, number_at, quantifier
 from grove_tui.language.events import after_a_clock_time, cause_of_a_clearing, event_after_time_word
 from grove_tui.language.family_members import with_members
@@ -214,7 +214,7 @@ class Mentions:
             return False
         if prev == "with" and s.low[at] in ("their", "his", "her", "its", "our", "my") and not companions(s, self.people, p):
             return False  # "families wait at the gate with their children": the families' own members
-        if prev in lx.CLAUSE_STARTERS | lx.EXCEPT_WORDS | {"than"} or (s.low[p - 1], prev) == (",", "where"):
+        if prev in lx.CLAUSE_STARTERS | lx.EXCEPT_WORDS | {"than"} and not compound_place_refused(s, at) or (s.low[p - 1], prev) == (",", "where"):
             return True
         if person_word_in_a_place_name(s, at):
             return False  # "the robot ferries soup from the kitchen diner to ...": a room, no diner

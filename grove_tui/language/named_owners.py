@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from grove_tui.language import lexicon as lx
-from grove_tui.language.described_owners import owned_by_described_name
+from grove_tui.language.described_owners import owned_by_described_name, owned_by_name_said, said_owner_name
 from grove_tui.language.elided_owners import elided_owned
 from grove_tui.language.named_things import things_of_name
 from grove_tui.language.place_owner import owner_at
@@ -18,7 +18,7 @@ from grove_tui.language.places import PlaceMatch
 from grove_tui.language.possessor_rooms import owned_by_possessor_name
 from grove_tui.language.sentence import Sentence
 
-__all__ = ["elided_owned", "owned_by_name", "owner_at"]
+__all__ = ["elided_owned", "owned_by_name", "owner_at", "said_owner_name"]
 
 Decided = tuple[PlaceMatch, float, str, tuple[str, ...]]
 
@@ -47,6 +47,8 @@ def _owner_words(s: Sentence, at: int, pronoun: str) -> tuple[tuple[str, ...], .
 def owned_by_name(s: Sentence, at: int, k: int, lemmas: Sequence[str]) -> Decided | None:
     """The room a possessive at word k names when its owner's name is one of the world's ("her
     room" of Mrs Okafor: room_3), else None."""
+    if k < s.n and s.low[k] not in ("her", "his", "their") and lemmas:
+        return owned_by_name_said(s, k, lemmas)  # "to Priya Shah's office": by the world's description
     if k >= s.n or s.low[k] not in ("her", "his", "their") or not lemmas:
         return None
     owner = _owner_words(s, at, s.low[k])

@@ -10,15 +10,19 @@ the cause of a hazard (hazards.py) and, round 22:
 - a call someone is on (round 23): "busy on a phone call", "in a video call";
 
 and, round 23, a span of the event ("in the interval", "during the break") and what people are busy on
-("on a phone call", "on a break", "on duty").
+("on a phone call", "on a break", "on duty"); round 69, what someone is absorbed in ("glued to the
+racing", absorbed_in.py) and, never read as a place at all (not_a_place, read by place_phrases.py), a
+walking aid ("on a zimmer frame", walking_aids.py).
 """
 
 from __future__ import annotations
 
-__all__ = ["caught_by", "heading_adverb", "infinitive_verb", "no_place_said"]
+__all__ = ["caught_by", "heading_adverb", "infinitive_verb", "no_place_said", "not_a_place"]
 
 from grove_tui.language.heading_adverbs import heading_adverb
 from grove_tui.language.infinitive_verbs import infinitive_verb
+from grove_tui.language.absorbed_in import absorbed_in
+from grove_tui.language.walking_aids import walking_aid
 from grove_tui.language import lexicon as lx
 from grove_tui.language.activity_nouns import PAUSE_NOUNS
 from grove_tui.language.consumed_things import consumed_thing
@@ -57,6 +61,8 @@ def no_place_said(s: Sentence, k: int, prep: str, at: int) -> bool:
     if (prep in ("at", "from", "in", "during") or prep == "for" and verb_lemma(s.low[at - 1]) not in _HEADING) \
             and names_an_event(s, k):
         return True  # "at the tea dance", "from the Cub pack", "come in for the sale": a gathering, no place to refuse
+    if absorbed_in(s, k, prep, at):
+        return True  # "glued to the racing", "engrossed in the snooker": what holds them (absorbed_in.py)
     if in_persons_relative(s, at):
         return True  # "a teenager who slipped on the wet tiles": before the scene (person_relatives.py)
     if a_thing_bid_on(s, k, prep, at):
@@ -108,6 +114,12 @@ def no_place_said(s: Sentence, k: int, prep: str, at: int) -> bool:
         word = lemma(s.low[j]) if j < s.n else ""
         return j > k and (lx.INTENT_VERBS.get(word) in ("walk", "wander") or word in PAUSE_NOUNS)
     return False
+
+
+def not_a_place(s: Sentence, k: int, prep: str, at: int) -> bool:
+    """Whether the phrase from k is never a place, whatever the world has: what a set-off participle
+    was stirred by ("Intrigued by the lights, ..."), a walking aid ("on a zimmer frame")."""
+    return caught_by(s, k, prep, at) or walking_aid(s, k, prep, at)
 
 
 def _a_call(s: Sentence, k: int) -> bool:

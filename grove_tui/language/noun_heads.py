@@ -30,3 +30,9 @@ def place_before_verb(s: Sentence, phrase: Sequence[str], j: int) -> bool:
     "in the cafeteria evacuate"; not the head noun of an unknown phrase ("the mountain bike trail.")."""
     lemmas = [lemma(x) for x in phrase]
     return s.index.is_nameless(lemmas) or (s.index.match(lemmas) is not None and not noun_head_ends(s, phrase, j))
+
+
+def hyphened_name_word(s: Sentence, j: int) -> bool:
+    """Whether the preposition at j is hyphened to a word the world's names have ("the under-twos room",
+    "the over-sixties lounge"): a word of the place's name, not a new place phrase (round 69)."""
+    return j + 2 < s.n and s.low[j + 1] == "-" and s.hyphen_inside(j + 1) and s.index.knows(lemma(s.low[j + 2]))

@@ -29,7 +29,7 @@ from grove_tui.language.place_outside import zone_around
 from grove_tui.language.place_of_zone import exit_of_room_said, ones_of_zone, thing_of_zone_said, zone_then_thing
 from grove_tui.language.place_names import CHAT_TIME_WORDS, INFORMAL_SURE, TIME_NOUNS, TIME_WORDS, chat_ends_name, informal_at, informal_room
 from grove_tui.language.place_meaning import Decided, PlaceMeaning, gerund_room
-from grove_tui.language.named_owners import elided_owned, owned_by_name, owner_at
+from grove_tui.language.named_owners import elided_owned, owned_by_name, owner_at, said_owner_name
 from grove_tui.language.named_kinds import by_head_alone
 from grove_tui.language.sibling_kinds import sibling_kind
 from grove_tui.language.ridden_things import ridden_on
@@ -39,18 +39,18 @@ from grove_tui.language.place_possessed import owned_places
 from grove_tui.language.its_places import its_place
 from grove_tui.language.movers import carried_in, taken_in
 from grove_tui.language.on_the_way import on_ones_way
-from grove_tui.language.not_places import caught_by, heading_adverb, infinitive_verb, no_place_said
+from grove_tui.language.not_places import heading_adverb, infinitive_verb, no_place_said, not_a_place
 from grove_tui.language.stage_parts import stage_part
 from grove_tui.language.bare_alias_kinds import by_bare_alias, other_kind_of_room
 from grove_tui.language.bare_place_names import bare_place_name
 from grove_tui.language.where_elsewhere import elsewhere
 from grove_tui.language.places import PlaceMatch
 from grove_tui.language.other_possessors import other_of_kind, setting_words
-from grove_tui.language.room_fixtures import fixture_of_room, fixtures_as_room
+from grove_tui.language.room_fixtures import fixture_of_room, fixtures_as_room, room_fixture_said
 from grove_tui.language.room_numbers import bare_room_number
 from grove_tui.language.sentence import IDENTIFIER, Sentence
 from grove_tui.language.verb_after_place import verb_after_place
-from grove_tui.language.noun_heads import place_before_verb
+from grove_tui.language.noun_heads import hyphened_name_word, place_before_verb
 from grove_tui.language.tokens import lemma, name_tokens, phrase_lemmas, verb_lemma
 from grove_tui.language.to_things import to_a_thing_before
 
@@ -112,7 +112,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if k in self.refused:
             return None  # "the wall" of "the hole in the wall", refused as one name
         record_unknown = record_unknown and prep != "between" and not no_place_said(s, k, prep, at)  # a time; a cause
-        if on_ones_way(s, k, prep, at) or ridden_on(s, k, prep, at) or caught_by(s, k, prep, at) or is_idiom_phrase(s, k, prep, at) and not self.names_place(k):
+        if on_ones_way(s, k, prep, at) or ridden_on(s, k, prep, at) or not_a_place(s, k, prep, at) or is_idiom_phrase(s, k, prep, at) and not self.names_place(k):
             return None  # "argue about a bug", "bursts into tears": a topic or a feeling, no place
         if k < s.n and (low[k] in ("where", "wherever", "upstairs", "downstairs") or may_be_place(s, k, prep, at)):
             return self.where_place(k, prep, at, mentioned)
@@ -135,7 +135,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             j += 1
         j = self.past_part(j)
         if j == k and prep in ("in", "at", "to", "by", "on", "from", "about", "around") and j < s.n and \
-                not s.index.knows(lemma(low[j])) and "&" not in low[j] and not self.names_place(j) and not bare_place_name(low, j) and around(s.index, (lemma(low[j]),)) is None:  # "in A&E"; "at trackside": the track's
+                not s.index.knows(lemma(low[j])) and "&" not in low[j] and not self.names_place(j) and not bare_place_name(low, j) and around(s.index, (lemma(low[j]),)) is None and not said_owner_name(s, j):  # "in A&E"; "at trackside": the track's; "to Priya Shah's office"
             return None  # "in line", "at once", "on time": no determiner and no place word
         if prep in ("through", "over") and at >= 1 and lx.INTENT_VERBS.get(verb_lemma(low[at - 1])) == "converse" \
                 and not self.names_place(j):
@@ -168,7 +168,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         thing = match if match is not None and match.exact else around(s.index, lemmas) or match
         match = beside_thing(s.index, prep, thing)
         beside = match is not thing  # the room around the thing: decided, whoever stands there
-        match = fixture_of_room(s, k, j) or (match if prep == "on" else fixtures_as_room(s, k, j, lemmas, match))
+        match, said_before = room_fixture_said(s, k, j) or (fixture_of_room(s, k, j) or (match if prep == "on" else fixtures_as_room(s, k, j, lemmas, match)), said_before)
         possessive = k < s.n and low[k] in ("her", "his", "their", "my", "our", "its", "your")
         # "the kids' bed", "the director's desk": a person named as the owner inside the phrase
         named_owner = next((s.lemma(x) for x in range(k, j - 1) if low[x + 1] in ("'s", "'", "’s", "’")
@@ -199,7 +199,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if match is not None and not match.exact and lemmas and lemmas[-1] in lx.NON_PLACES and not tier_place(lemmas):
             return None  # "off the train": a word that names no place, though an alias shares it
         numbered = any(IDENTIFIER.fullmatch(t) and not t.isalpha() for t in lemmas)
-        if absent_kind(s.index, lemmas) is not None or by_head_alone(s.index, lemmas, match) or (owned is None and other_of_kind(
+        if absent_kind(s.index, lemmas) is not None or owned is None and by_head_alone(s.index, lemmas, match) or (owned is None and other_of_kind(
                 s.index, match, lemmas, setting_words(s, start, j, self.people.is_person_noun))):  # "the planetarium (room)", "the members' enclosure"
             numbered, match = True, None
         if match is not None and not self._identifiers_agree(lemmas, match):
@@ -345,8 +345,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
             if phrase and not joined and (self._time_starts(j) or chat_ends_name(
                     s, j, phrase, self.whole_name(phrase))):
                 break  # "the coat counter b4 closing", "the lobby asap", "in lobby waitin 4 taxis": no more place
-            if w in lx.PLACE_PREPOSITIONS and not joined and not (phrase and s.index.knows(lemma(w))):
-                break
+            if w in lx.PLACE_PREPOSITIONS and not joined and not (phrase and s.index.knows(lemma(w))) and not hyphened_name_word(s, j):
+                break  # "the under-twos room": a preposition hyphened to a word of a name is one of its words
             after_hyphen, joined = joined, False
             if phrase and not after_hyphen and (self._verb_ends_name(phrase, j) or verb_after_place(s, phrase, j, self.whole_name)):
                 break  # "key-cutting kiosk": one name; "the knife-skills course sidles away": a verb
@@ -365,8 +365,8 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
                 phrase.append(w if w.isdigit() else str(lx.UNITS[w]))
                 j += 1
                 continue
-            if s.w[j].pos in ("ADV", "PRON", "ADP", "CCONJ", "SCONJ", "PART") and not after_hyphen and (
-                    not s.index.knows(lemma(w)) or heading_adverb(s, phrase, j)):
+            if s.w[j].pos in ("ADV", "PRON", "ADP", "CCONJ", "SCONJ", "PART") and not after_hyphen and (not s.index.knows(
+                    lemma(w)) or heading_adverb(s, phrase, j)) and not hyphened_name_word(s, j):
                 break  # "from the recital hall back to the foyer": "back" heads on (no "back row")
             phrase.append(w)
             j += 1

@@ -3,7 +3,8 @@
 about on a lilo". After "on", with no
 "the" (bare, "a", or whose), a thing people ride is how they go, no place: never the world's rack of rings
 or bike stand. A posture or a workout before it ("sits on a bike", "pedals on the exercise bikes") leaves
-the phrase to the reader, as does "the" ("on the rings" of a gym)."""
+the phrase to the reader, as does "the" ("on the rings" of a gym); round 69, so does a thing that stays
+put ("pts on exercise bikes", "on a static bike") where the world has such things."""
 
 from __future__ import annotations
 
@@ -21,6 +22,8 @@ _OWNERS = frozenset("a an their his her my our your its".split())
 # Verbs that keep people in one spot on the thing: the phrase may be a place of the world.
 _STILL = frozenset("sit stand lie lounge perch wait pedal train exercise work rest sprawl kneel".split())
 _BREAKS = frozenset({",", ";", ".", "and", "while", "as", "when", "then", "but"})
+# Words that make a ridden thing one that stays put (round 69): "exercise bikes", "a static bike".
+_STATIONARY = frozenset("exercise static stationary spin gym indoor rowing".split())
 
 
 def ridden_on(s: Sentence, k: int, prep: str, at: int) -> bool:
@@ -32,6 +35,9 @@ def ridden_on(s: Sentence, k: int, prep: str, at: int) -> bool:
         j += 1  # "rubber rings", "inflatable rings"
     if j >= s.n or lemma(s.low[j]) not in _RIDDEN | _CARRIERS or j + 1 < s.n and s.w[j + 1].pos == "NOUN":
         return False
+    first = k + 1 if s.low[k] in _OWNERS else k
+    if any(s.low[x] in _STATIONARY for x in range(first, j)) and s.index.knows(lemma(s.low[j])):
+        return False  # "pts on exercise bikes" where the world has bikes: ridden nowhere
     x = at - 1
     while x >= 0 and s.low[x] not in _BREAKS:
         if verb_lemma(s.low[x]) in _STILL or s.low[x].rstrip("s") in _STILL or s.lemma(x) in _STILL:

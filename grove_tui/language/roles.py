@@ -10,6 +10,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.descriptor_starts import start_said_after
 from grove_tui.language.exercise_machines import stays_on_a_machine
 from grove_tui.language.later_stops import goes_on_after
 from grove_tui.language.place_narrowing import guessed_over_named
@@ -82,8 +83,9 @@ def assign_roles(index: PlaceIndex, places: Sequence[Place], scene_places: Seque
             # "walk to the cafeteria before going to the pharmacy": the cafeteria on the way
             roles.via.append(roles.destination)
             roles.destination = name
-        elif role == "start" and (roles.start is None or _narrows(index, name, roles.start, roles)):
-            roles.start = name
+        elif role == "start" and (roles.start is None or _narrows(index, name, roles.start, roles) or
+                                  start_said_after(roles.read_from.get(roles.start), p, verb_index)):
+            roles.start = name  # "tourists off the coaches stream from the coach park": from the park
         elif role == "destination" and (roles.destination is None or _narrows(index, name, roles.destination, roles)
                                         or (marked and not said_to)):
             # "drops her bags off at the lockers and heads to the café": the café
@@ -196,8 +198,8 @@ def role_of(index: PlaceIndex, p: Place, verb: str, verb_index: int | None, stat
     if prep == "from" and p.written == "from" and stationary and intent in lx.STATIONARY_INTENTS and \
             (verb_index is None or p.index > verb_index):  # not a fronted "From the pharmacy, two wait"
         return "location"  # "a guard watches them from the supermarket doors": where the watcher stands
-    if prep in ("from", "obj:start"):
-        return "start"
+    if prep in ("from", "obj:start") or prep == "off" and not stationary:
+        return "start"  # "brings the washing in off the balcony": off it is where they set out (round 69)
     if prep in ("for", "purpose"):  # "head for the exit"; "to catch the train at platform 1"
         return "location" if stationary else "destination"
     if prep in ("to", "into", "towards", "toward", "onto", "obj:dest"):

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from grove_tui.language.place_ordinals import ordinal_place
 from grove_tui.language.places import PlaceMatch
 from grove_tui.language.sentence import Sentence
 from grove_tui.language.tokens import phrase_lemmas
@@ -17,12 +18,16 @@ def fixture_of_room(s: Sentence, k: int, j: int) -> PlaceMatch | None:
     mark = next((x for x in range(k + 1, j) if s.low[x] in ("'s", "’s")), None)
     if mark is None:
         return None
-    room = s.index.match(phrase_lemmas(s.low[k:mark]))
+    said = phrase_lemmas(s.low[k:mark])
+    ranked = ordinal_place(s.index, said)  # "the fourth gate's seats": the fourth gate's (round 69)
+    room = ranked[0] if ranked is not None else s.index.match(said)
     thing = phrase_lemmas(s.low[mark + 1:j])
     if room is None or room.kind != "zone" or not thing:
         return None
     inside = [m for m in s.index.candidates(thing) if m.kind == "entity" and m.zone == room.name]
-    return inside[0] if inside else None
+    # the room said decides it (round 69): "the second platform's bench" is platform 2's, though its words
+    # are no whole name of the bench
+    return PlaceMatch(inside[0].name, "entity", room.name, 1.0, True) if inside else None
 
 
 def fixtures_as_room(s: Sentence, k: int, j: int, lemmas: Sequence[str], match: PlaceMatch | None) -> PlaceMatch | None:
@@ -45,3 +50,22 @@ def _of_kind(s: Sentence, name: str, head: str) -> bool:
     typed = any(head in t.split() for e in s.index.entries if e.kind == "entity" and entry is not None and
                 e.zone == entry.zone for t in e.types)  # the room has things of that type: by type alone
     return entry is not None and (any(head in t.split() for t in entry.types) or not typed and head in entry.tokens)
+
+
+def room_fixture_said(s: Sentence, k: int, j: int) -> tuple[PlaceMatch, tuple[PlaceMatch, float, str, tuple[str, ...]]] | None:
+    """fixture_of_room, decided (round 69), when the words before "'s" are a room's whole name or alias
+    and the room has one thing of the words after it ("the south concourse's bar" where other rooms have
+    bars too): the room said chooses, so meaning is not asked again; the match and its decision."""
+    mark = next((x for x in range(k + 1, j) if s.low[x] in ("'s", "’s")), None)
+    if mark is None:
+        return None
+    said = phrase_lemmas(s.low[k:mark])
+    room = s.index.match(said)
+    entry = s.index.entry(room.name) if room is not None and room.exact and room.kind == "zone" else None
+    if entry is None or tuple(said) not in entry.phrases:
+        return None  # "the women's toilet", "the manager's office": an owner, no room's name
+    inside = [m for m in s.index.candidates(phrase_lemmas(s.low[mark + 1:j])) if m.kind == "entity" and m.zone == room.name]
+    if not inside or len(inside) > 1 and inside[1].score >= inside[0].score - 1e-9:
+        return None  # "the food court's counter" of several counters there: not decided by the room
+    found = PlaceMatch(inside[0].name, "entity", room.name, 1.0, True)
+    return found, (found, 1.0, f"'{' '.join(s.low[k:j])}': the {found.name} of {room.name}, the room said", ())

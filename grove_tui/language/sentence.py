@@ -27,6 +27,7 @@ from grove_tui.language.places import PlaceIndex
 from grove_tui.language.purpose_things import things_end
 from grove_tui.language.text import plain
 from grove_tui.language.tokens import lemma, verb_lemma
+from grove_tui.language.hyphened_verbs import hyphened_verb
 from grove_tui.language.worked_things import is_work_particle
 
 # A word that picks one place of a series: a number, a letter and a number ("c4", "a1"), or a single
@@ -197,6 +198,8 @@ class Sentence:
         """Whether the word at k is a verb (after "to": a purpose, not a place)."""
         if k >= self.n:
             return False
+        if hyphened_verb(self, k):
+            return True  # "keen to test-drive the estate car": a purpose, though the parser reads "test" a noun
         w = self.low[k]
         if w in lx.DETERMINERS or self.w[k].pos in ("DET", "NUM", "PROPN") or bare_place_name(self.low, k):
             return False  # "to lost property": a place's name
@@ -221,8 +224,9 @@ class Sentence:
         while j < self.n and j < k + 6:
             w = self.low[j]
             if (self.is_punct(j) and not self.joins(j)) or w in lx.CLAUSE_STARTERS or \
-                    (w in lx.PLACE_PREPOSITIONS and j > k) or w == "for":
-                break
+                    (w in lx.PLACE_PREPOSITIONS and j > k) or w == "for" or j > k and any(
+                        tuple(self.low[j:j + len(p)]) == p for p in lx.NEGATED_PLACE_PHRASES):
+                break  # "for bacon rolls rather than the staff lounge": the purpose ends before the place refused
             if not allow_objects and j > k and verb_lemma(w) in lx.INTENT_VERBS and self.w[j].pos == "VERB":
                 break
             j += 1

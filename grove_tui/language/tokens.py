@@ -138,6 +138,10 @@ def name_tokens(text: str) -> list[str]:
     return phrase_lemmas(words(text))
 
 
+# Stopwords that are a noun at the start of a place's name ("the still house", "the still room").
+_NOUN_STOPWORDS = frozenset({"still"})
+
+
 def phrase_lemmas(ws: list[str] | tuple[str, ...]) -> list[str]:
     """Lemmas of the words of a place phrase as names are indexed: stopwords out, except a single
     letter after the first word, which tells places apart ("ward a", "check-in counter b"), and a
@@ -155,7 +159,8 @@ def phrase_lemmas(ws: list[str] | tuple[str, ...]) -> list[str]:
             out.append(str(UNITS[w]))
         elif w == "it" and k + 1 < len(ws):
             out.append(w)
-        elif w not in STOPWORDS or (k > 0 and len(w) == 1 and w.isalpha()):
+        elif w not in STOPWORDS or (k > 0 and len(w) == 1 and w.isalpha()) or \
+                (k == 0 and w in _NOUN_STOPWORDS and len(ws) > 1 and ws[1] != "-"):  # "the still house": a name's word
             out.append(lemma(w))
     return out
 

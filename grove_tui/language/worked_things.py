@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING
 
 from grove_tui.language import lexicon as lx
 from grove_tui.language.filled_things import FILLING_PARTICLES
+from grove_tui.language.gerund_loads import load_gerund
 from grove_tui.language.tokens import verb_lemma
 from grove_tui.language.used_fixtures import uses_fixture
 
@@ -91,7 +92,7 @@ def work_particles(words: list[Word]) -> list[Word]:
 def is_work_particle(words: list[Word], i: int) -> bool:
     """Whether the word at `i` is a verb of work's particle marked by `work_particles`."""
     return 0 < i < len(words) and words[i].tag == "RP" and words[i].dep == "prt" and \
-        words[i].lower in _particles(words[i - 1])
+        words[i].lower in _particles(words[i - 1]) and not load_gerund(words, i - 1)  # "a basket of washing off X"
 
 
 def _particles(verb: Word) -> frozenset[str]:
