@@ -32,6 +32,7 @@ from grove_tui.language.awaited_people import awaited_at_the_place
 from grove_tui.language.activity_times import without_activity_times
 from grove_tui.language.asides import without_asides
 from grove_tui.language.awaited_events import with_until, without_awaited_things
+from grove_tui.language.awaited_comers import without_awaited_comers
 from grove_tui.language.second_names import without_second_names
 from grove_tui.language.chat_spelling import chat_to
 from grove_tui.language.scale_and_figures import with_scale_and_figures
@@ -65,6 +66,7 @@ from grove_tui.language.scale_counts import with_scale_figures
 from grove_tui.language.counted_collectives import with_counted_collectives
 from grove_tui.language.queue_lengths import with_queue_lengths
 from grove_tui.language.has_a_queue import with_queues_had
+from grove_tui.language.places_having_people import with_places_having_people
 from grove_tui.language.work_progressives import as_simple_work
 from grove_tui.language.fronted_movers import with_fronted_movers
 from grove_tui.language.fronted_ing_times import with_fronted_ing_times
@@ -216,7 +218,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = as_setup_orders(text)  # "Set up a class of fifteen in X and two helpers in Y": "Have ..."
     text = with_counted_outings(as_outing_parties(text))  # "a stag do of twelve": a stag party of twelve; "twenty on the tour": twenty people on it
     text = with_counted_collectives(with_scale_figures(with_joined_kinds(with_counted_lists(with_rough_scales(with_scale_and_figures(text))))))  # "the cast of 14", "Six of Blue Watch"; "the hundred-odd travellers": about 100; "ten men and women": ten people
-    text = with_queues_had(with_queue_lengths(text))  # "the line at X is forty strong", "X has a line of 3": they queue at X
+    text = with_places_having_people(with_queues_had(with_queue_lengths(text)), index)  # "the line at X is forty strong", "X has a line of 3": they queue at X; "the academy has six trainees in induction": six are in it
     text = as_work_at_posts(as_simple_work(text))  # "Janet is manning the desk", "Maria runs the issue desk": she mans it
     text = with_fronted_movers(text)  # "Pushing her dad's wheelchair, a woman brings him ...": her dad goes too
     text = without_staying_before_passive_moves(text)  # "the travellers waiting there are sent up X": "the travellers there are sent up X"
@@ -286,7 +288,7 @@ def _read(s: Sentence) -> PromptReading:
     clauses = Clauses(s, people, places)
     robot_clauses = RobotClauses(s, people, clauses)
     groups = Groups(s, places, finder, clauses, robot_clauses)
-    mentions = joined_couples(s, people, kin_families(s, without_described_things(s, without_named_events(s, without_activity_times(s, without_awaited_things(s, without_closers(s, without_causers(s, without_second_names(s, without_asides(s, with_people_after_an_event(s, with_counts_before(s, finder.mention_at, finder.find()))))))))))))  # "Mum and Dad", "a man and his wife": one group of two
+    mentions = joined_couples(s, people, kin_families(s, without_described_things(s, without_named_events(s, without_activity_times(s, without_awaited_things(s, without_awaited_comers(s, without_closers(s, without_causers(s, without_second_names(s, without_asides(s, with_people_after_an_event(s, with_counts_before(s, finder.mention_at, finder.find())))))))))))))  # "Mum and Dad", "a man and his wife": one group of two
     taken_by_each(s, people, mentions)
     found = robot_clauses.find(mentions)
     robot = robot_clauses.reading(found)
