@@ -3,7 +3,8 @@ robbot", "teh robot waits". The chat names (robot_chat.py) list a few short form
 makes any slip of one letter: two letters swapped, one dropped, doubled or struck wrong. A word one
 such slip from "robot" or "robots" that is no English word ("root", "roots" are kept) is the robot,
 written out before any pass looks for it, and "teh"/"hte" right before it is "the" (chat_slips.py
-writes the other swapped small words out only later, after the robot's own passes)."""
+writes the other swapped small words out only later, after the robot's own passes). A bare "bot" opening a
+clause ("bot on standby @ the front desk, ...") is written "robot": the parser takes a "bot" there for a verb."""
 
 from __future__ import annotations
 
@@ -13,6 +14,7 @@ _TARGETS = ("robot", "robots")
 # Real words (and a name) one slip from the robot's name.
 _KEPT = frozenset({"root", "roots", "robots", "robot", "robo", "abbot"})
 _WORD = re.compile(r"(?<![\w'@&/-])([A-Za-z]{4,7})(?![\w'@&/-])")
+_BARE_BOT = re.compile(r"(^|[.;:!?,]\s*|\b(?:and|then|while|whilst|but|so|n|&)\s+)(bot|Bot|BOT)(?=\s+[A-Za-z@])")
 _SWAPPED_THE = re.compile(r"(?<![\w'@&/-])(teh|hte)(\s+)(?=robots?\b)", re.IGNORECASE)
 
 
@@ -49,5 +51,6 @@ def _robot(m: re.Match[str]) -> str:
 
 def with_robot_spelt(text: str) -> str:
     """The text with each one-slip spelling of the robot's name written "robot" (module doc)."""
-    return _SWAPPED_THE.sub(lambda m: ("The" if m.group(1)[0].isupper() else "the") + m.group(2),
+    text = _SWAPPED_THE.sub(lambda m: ("The" if m.group(1)[0].isupper() else "the") + m.group(2),
                             _WORD.sub(_robot, text))
+    return _BARE_BOT.sub(lambda m: m.group(1) + ("robot" if m.group(2) == "bot" else "Robot"), text)
