@@ -126,6 +126,7 @@ from grove_tui.language.side_places import with_side_places
 from grove_tui.language.stopping_by import as_stopped_by
 from grove_tui.language.left_for_events import with_events_left_for
 from grove_tui.language.seen_to_by import without_seen_to_by
+from grove_tui.language.glued_to import as_kept_at
 from grove_tui.language.lent_arms import as_arm_escort
 from grove_tui.language.linked_arms import without_held_hands
 from grove_tui.language.met_then_moved import as_taken_along
@@ -249,7 +250,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = without_apposed_members(with_included_members(text))  # "Kayleigh, one of the lifeguards, leaves": "Kayleigh leaves"; "a family of seven, grandparents included,": "including grandparents"
     text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
     text = without_relative_pasts(text)  # "kids who've sat through the film pile out of X": "kids pile out of X"
-    text = without_seen_to_by(with_events_left_for(as_stopped_by(text, index), index))  # "abandon their desks for the briefing at the whiteboard": they go there; "to be seen by the medics at X": to X  # "stops by the toy store to buy a gift", "pops by the pharmacy": goes to it
+    text = as_kept_at(without_seen_to_by(with_events_left_for(as_stopped_by(text, index), index)), index)  # "abandon their desks for the briefing at the whiteboard": they go there; "to be seen by the medics at X": to X; "glued to the wallboard": at it  # "stops by the toy store to buy a gift", "pops by the pharmacy": goes to it
     text = as_gone_to(as_going_in(as_heading(with_vehicle_loads(text))))  # "go and flop in X": "go to X"; "locks himself in the gents": "heads into the gents"  # "a minibus of pensioners": a minibusload; "a coachload descends on the café": "heads to the café"
     text = as_placing_clause(text)
     text = as_delivery(text)  # "the robot carries soup out to Gran, who is knitting on the terrace": to the terrace, Gran there # "the robot brings Nan's pills to the settee where she's sitting": Nan waits there  # "With Nan at the stove, the twins ...": "Nan is at the stove, and ..."
