@@ -35,12 +35,12 @@ def _said(m: re.Match[str], index: PlaceIndex) -> str:
     if not owner_words or owner_words[0] in _PEOPLE_OWNERS or owner_words[-1] in lx.KIN_NAMES:
         return m.group(0)
     head = lemma(owner_words[-1])
+    if (head in lx.PERSON_NOUNS or owner_words[-1] in lx.PERSON_NOUNS) and head not in lx.IMPLIED_RANGES:
+        return m.group(0)  # "the nurse has three patients in ward B": hers, said as they are
     owner_place = index.match(tuple(phrase_lemmas(owner_words))) is not None
     owner_team = head in lx.IMPLIED_RANGES or head in lx.BUILDING_WORDS
     if not owner_place and not owner_team:
         return m.group(0)  # "Mum has two kids in the car", "the nurse has three patients in ward B"
-    if not owner_place and head in lx.PERSON_NOUNS and head not in lx.IMPLIED_RANGES:
-        return m.group(0)
     who = m.group("who")
     if lemma(words(who)[-1]) not in lx.PERSON_NOUNS and not who.lower().endswith(("ees", "ers", "ists", "ants")):
         return m.group(0)  # "the café has two tables in the window": no people

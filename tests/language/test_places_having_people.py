@@ -22,6 +22,10 @@ def test_a_place_or_team_that_has_n_people_is_a_group_of_n_there(read, world, pr
     assert reading.unknown_places == ()
 
 
-def test_a_person_who_has_people_is_left_alone(read):
-    groups = read("office", "The receptionist has two visitors at the front desk.").groups
+@pytest.mark.parametrize("world,prompt", [
+    ("office", "The receptionist has two visitors at the front desk."),
+    ("hospital", "The nurse has three patients in ward B."),
+])
+def test_a_person_who_has_people_is_left_alone(read, world, prompt):
+    groups = read(world, prompt).groups
     assert any(g.count.value == 1 for g in groups)
