@@ -53,6 +53,7 @@ from grove_tui.language.ordinal_others import with_ordinal_others
 from grove_tui.language.watched_people import without_watched
 from grove_tui.language.vehicle_loads import with_vehicle_loads
 from grove_tui.language.chat_articles import with_chat_articles
+from grove_tui.language.chat_ing_items import with_chat_ing_items
 from grove_tui.language.chat_place_tallies import with_chat_place_tallies
 from grove_tui.language.described_things import without_described_things
 from grove_tui.language.named_events import without_named_events
@@ -216,7 +217,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_misspelt_verbs(text, index)  # "infants from the school trapse across": "traipse", no "school trapse"
     text = with_homophone_slips(chat_to(text, index), index)  # "form there desks too the kitchen": from their desks to it; "from the staff office 2 bay 4": chat's "to" before a place
     text = without_number_words(text, index)  # "to number 107": to the room 107
-    text = with_chat_articles(with_chat_pairs(text))  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
+    text = with_chat_ing_items(with_chat_articles(with_chat_pairs(text)))  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
     text = as_dropped_off(as_ordered_clauses(as_got_out(as_workers(text))), index)  # "Have Janet man the front desk": Janet mans it; "get the parents in X out by Y"; "leaves a box with the desk": drops it off there
     text = as_setup_orders(text)  # "Set up a class of fifteen in X and two helpers in Y": "Have ..."
     text = with_counted_outings(as_outing_parties(text))  # "a stag do of twelve": a stag party of twelve; "twenty on the tour": twenty people on it
