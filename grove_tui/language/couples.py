@@ -17,6 +17,7 @@ from collections.abc import Sequence
 from grove_tui.language.escorted import attribute_end
 from grove_tui.language.mention import Mention
 from grove_tui.language.model import Count
+from grove_tui.language.moving_kin_pairs import goes_with_a_parent
 from grove_tui.language.people import People
 from grove_tui.language.sentence import Sentence
 
@@ -58,7 +59,7 @@ def pair_of(s: Sentence, people: People, a: Mention, b: Mention) -> bool:
     if b.last + 1 < s.n and people.third_person_verb(b.last + 1):
         return False
     if s.low[b.first] in _POSSESSIVES:
-        return s.low[b.last] in _PARTNERS or s.lemma(b.last) in _PARTNERS
+        return s.low[b.last] in _PARTNERS or s.lemma(b.last) in _PARTNERS or goes_with_a_parent(s, b.first, b.last)
     return _couple(s.lemma(a.last), s.lemma(b.last))
 
 

@@ -98,8 +98,18 @@ def named_thing(s: Sentence, i: int) -> bool:
 
 def sets_off_for(s: Sentence, i: int) -> bool:
     """Whether the "for" at i follows "set off" or "set out" ("set off for the aquarium"): where they go,
-    as after "head for" ("set aside for worship" is what for)."""
-    return i >= 2 and verb_lemma(s.low[i - 2]) == "set" and s.low[i - 1] in ("off", "out")
+    as after "head for" ("set aside for worship" is what for); also past the place they set off from ("set off
+    from the volunteers' room for kennel block B", round 69)."""
+    if i >= 2 and verb_lemma(s.low[i - 2]) == "set" and s.low[i - 1] in ("off", "out"):
+        return True
+    if i + 1 >= s.n or s.low[i + 1] in ("a", "an", "some", "their", "his", "her", "my", "our", "lunch", "coffee"):
+        return False  # "set off from the ward for a coffee": what for
+    for k in range(i - 1, max(1, i - 8), -1):
+        if s.low[k] in (",", ";", ".", "and", "then") or s.w[k].pos == "VERB":
+            return False
+        if s.low[k] == "from" and s.low[k - 1] in ("off", "out") and k >= 2 and verb_lemma(s.low[k - 2]) == "set":
+            return True
+    return False
 
 
 def obliged_to(s: Sentence, i: int) -> bool:

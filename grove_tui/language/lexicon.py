@@ -58,7 +58,7 @@ BARE_PLURAL_RANGE = (3, 6)  # "visitors walk to the ward": some visitors, not no
 IMPLIED_RANGES: dict[str, tuple[int, int]] = {
     "couple": (2, 2), "pair": (2, 2), "family": (3, 4), "group": (3, 5), "party": (3, 5), "team": (3, 6),
     "squad": (3, 6), "crowd": (15, 30), "throng": (15, 30), "horde": (15, 30), "army": (20, 50), "legion": (20, 50), "swarm": (15, 30), "stream": (10, 25), "flood": (15, 30), "gaggle": (5, 12), "flock": (8, 20), "herd": (8, 20), "mob": (8, 20), "trickle": (3, 8), "bunch": (3, 5), "circle": (3, 5), "gang": (3, 5), "trio": (3, 3), "jury": (12, 12), "triplet": (3, 3),
-    "duo": (2, 2), "class": (10, 20), "tour": (6, 12), "queue": (4, 8), "line": (4, 8), "delegation": (3, 6), "twin": (2, 2), "quartet": (4, 4), "quintet": (5, 5), "twosome": (2, 2), "foursome": (4, 4), "sextet": (6, 6),
+    "duo": (2, 2), "class": (10, 20), "tour": (6, 12), "queue": (4, 8), "line": (4, 8), "delegation": (3, 6), "twin": (2, 2), "quartet": (4, 4), "quintet": (5, 5), "twosome": (2, 2), "foursome": (4, 4), "sextet": (6, 6), "threesome": (3, 3), "fivesome": (5, 5), "fourball": (4, 4), "household": (3, 5),
     # what a vehicle holds ("a coachload of pensioners", "a minibus of pupils" is read as a place)
     "coachload": (30, 50), "busload": (30, 50), "vanload": (5, 10), "carload": (3, 5), "boatload": (20, 40),
     "planeload": (100, 180), "minibusload": (10, 16), "trainload": (100, 300), "crew": (3, 8), "shift": (4, 10),
@@ -87,7 +87,7 @@ COUPLE_PLURALS = frozenset({"newlywed", "honeymooner"})  # "the newlyweds": a co
 # Collectives that, with "of" and people, are only a vague quantity ("a crowd of visitors").
 QUANTIFYING_COLLECTIVES = frozenset({"crowd", "throng", "horde", "army", "legion", "swarm", "stream", "flood", "gaggle", "flock", "herd", "mob", "trickle"})
 TOGETHER_COLLECTIVES = frozenset({"couple", "pair", "family", "group", "party", "team", "bunch", "circle", "gang",
-                                  "trio", "duo", "quartet", "quintet", "twosome", "foursome", "sextet", "class", "tour", "delegation", "twin", "triplet", "coachload", "busload",
+                                  "trio", "duo", "quartet", "quintet", "twosome", "foursome", "sextet", "threesome", "fivesome", "fourball", "household", "class", "tour", "delegation", "twin", "triplet", "coachload", "busload",
                                   "vanload", "carload", "boatload", "planeload", "minibusload", "trainload", "crew",
                                   "shift", "club", "choir", "troop", "pack"})
 # What a collective does as it comes about: "a queue of 12 forms at the desk" counts no "forms".
@@ -140,7 +140,7 @@ PERSON_NOUNS = frozenset(
     stranger newcomer latecomer passerby bystander onlooker stakeholder executive director secretary assistant
     analyst programmer designer consultant contractor electrician plumber technician inspector officer police
     policeman policewoman firefighter medic orderly attendant steward stewardess pilot crew traveller tenant
-    homeowner host hostess child everyone everybody someone somebody anyone anybody nobody gang trio duo quartet quintet twosome foursome sextet
+    homeowner host hostess child everyone everybody someone somebody anyone anybody nobody gang trio duo quartet quintet twosome foursome sextet threesome fivesome fourball
     delegation tour class kids youngster adolescent elder pensioner retiree grandson granddaughter grandchild
     nephew niece baby nanny babysitter mum mom dad papa mama husband wife fiance bride groom
     cashier clerk vendor shopkeeper salesperson pharmacist surgeon midwife janitor custodian

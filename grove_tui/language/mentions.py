@@ -17,7 +17,7 @@ from grove_tui.language import lexicon as lx
 from grove_tui.language.another_count import more_people, the_other_count
 from grove_tui.language.apposed_counts import apposed_collective, collective_is_a_verb
 from grove_tui.language.occasion_headings import without_heading
-from grove_tui.language.count_tails import after_apposed_count
+from grove_tui.language.count_tails import a_total, after_apposed_count
 from grove_tui.language.collectives import Collectives, members_named
 from grove_tui.language.couple_words import bare_couple
 from grove_tui.language.cue_in_names import compound_place_refused, person_word_in_a_place_name
@@ -186,7 +186,7 @@ class Mentions:
             return False
         if m.relation not in (None, f"subset_of:{index}") or \
                 m.label not in ("person", before.label) and not (before.whole_zone and before.label == "person") \
-                and not members_named(before) and not members_said(s, before):
+                and not members_named(before) and not members_said(s, before) and not a_total(s, m.last + 1):
             return False  # but "everyone on the balcony, three friends, ...": how many, and who
         if before.count is not None and before.count.kind not in ("vague", "implied") and not before.whole_zone:
             return False  # "Ten nurses, two of them students, ...": part of a group said in full

@@ -32,6 +32,7 @@ from grove_tui.language.awaited_people import awaited_at_the_place
 from grove_tui.language.activity_times import without_activity_times
 from grove_tui.language.asides import without_asides
 from grove_tui.language.awaited_events import with_until, without_awaited_things
+from grove_tui.language.awaited_comers import without_awaited_comers
 from grove_tui.language.second_names import without_second_names
 from grove_tui.language.chat_spelling import chat_to
 from grove_tui.language.scale_and_figures import with_scale_and_figures
@@ -52,6 +53,7 @@ from grove_tui.language.ordinal_others import with_ordinal_others
 from grove_tui.language.watched_people import without_watched
 from grove_tui.language.vehicle_loads import with_vehicle_loads
 from grove_tui.language.chat_articles import with_chat_articles
+from grove_tui.language.chat_ing_items import with_chat_ing_items
 from grove_tui.language.chat_place_tallies import with_chat_place_tallies
 from grove_tui.language.described_things import without_described_things
 from grove_tui.language.named_events import without_named_events
@@ -65,6 +67,7 @@ from grove_tui.language.scale_counts import with_scale_figures
 from grove_tui.language.counted_collectives import with_counted_collectives
 from grove_tui.language.queue_lengths import with_queue_lengths
 from grove_tui.language.has_a_queue import with_queues_had
+from grove_tui.language.places_having_people import with_places_having_people
 from grove_tui.language.work_progressives import as_simple_work
 from grove_tui.language.fronted_movers import with_fronted_movers
 from grove_tui.language.fronted_ing_times import with_fronted_ing_times
@@ -122,6 +125,9 @@ from grove_tui.language.relative_pasts import without_relative_pasts
 from grove_tui.language.signal_fronts import without_signal_fronts
 from grove_tui.language.side_places import with_side_places
 from grove_tui.language.stopping_by import as_stopped_by
+from grove_tui.language.left_for_events import with_events_left_for
+from grove_tui.language.seen_to_by import without_seen_to_by
+from grove_tui.language.glued_to import as_kept_at
 from grove_tui.language.lent_arms import as_arm_escort
 from grove_tui.language.linked_arms import without_held_hands
 from grove_tui.language.met_then_moved import as_taken_along
@@ -211,12 +217,12 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_misspelt_verbs(text, index)  # "infants from the school trapse across": "traipse", no "school trapse"
     text = with_homophone_slips(chat_to(text, index), index)  # "form there desks too the kitchen": from their desks to it; "from the staff office 2 bay 4": chat's "to" before a place
     text = without_number_words(text, index)  # "to number 107": to the room 107
-    text = with_chat_articles(with_chat_pairs(text))  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
+    text = with_chat_ing_items(with_chat_articles(with_chat_pairs(text)))  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
     text = as_dropped_off(as_ordered_clauses(as_got_out(as_workers(text))), index)  # "Have Janet man the front desk": Janet mans it; "get the parents in X out by Y"; "leaves a box with the desk": drops it off there
     text = as_setup_orders(text)  # "Set up a class of fifteen in X and two helpers in Y": "Have ..."
     text = with_counted_outings(as_outing_parties(text))  # "a stag do of twelve": a stag party of twelve; "twenty on the tour": twenty people on it
     text = with_counted_collectives(with_scale_figures(with_joined_kinds(with_counted_lists(with_rough_scales(with_scale_and_figures(text))))))  # "the cast of 14", "Six of Blue Watch"; "the hundred-odd travellers": about 100; "ten men and women": ten people
-    text = with_queues_had(with_queue_lengths(text))  # "the line at X is forty strong", "X has a line of 3": they queue at X
+    text = with_places_having_people(with_queues_had(with_queue_lengths(text)), index)  # "the line at X is forty strong", "X has a line of 3": they queue at X; "the academy has six trainees in induction": six are in it
     text = as_work_at_posts(as_simple_work(text))  # "Janet is manning the desk", "Maria runs the issue desk": she mans it
     text = with_fronted_movers(text)  # "Pushing her dad's wheelchair, a woman brings him ...": her dad goes too
     text = without_staying_before_passive_moves(text)  # "the travellers waiting there are sent up X": "the travellers there are sent up X"
@@ -245,7 +251,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = without_apposed_members(with_included_members(text))  # "Kayleigh, one of the lifeguards, leaves": "Kayleigh leaves"; "a family of seven, grandparents included,": "including grandparents"
     text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
     text = without_relative_pasts(text)  # "kids who've sat through the film pile out of X": "kids pile out of X"
-    text = as_stopped_by(text, index)  # "stops by the toy store to buy a gift", "pops by the pharmacy": goes to it
+    text = as_kept_at(without_seen_to_by(with_events_left_for(as_stopped_by(text, index), index)), index)  # "abandon their desks for the briefing at the whiteboard": they go there; "to be seen by the medics at X": to X; "glued to the wallboard": at it  # "stops by the toy store to buy a gift", "pops by the pharmacy": goes to it
     text = as_gone_to(as_going_in(as_heading(with_vehicle_loads(text))))  # "go and flop in X": "go to X"; "locks himself in the gents": "heads into the gents"  # "a minibus of pensioners": a minibusload; "a coachload descends on the café": "heads to the café"
     text = as_placing_clause(text)
     text = as_delivery(text)  # "the robot carries soup out to Gran, who is knitting on the terrace": to the terrace, Gran there # "the robot brings Nan's pills to the settee where she's sitting": Nan waits there  # "With Nan at the stove, the twins ...": "Nan is at the stove, and ..."
@@ -286,7 +292,7 @@ def _read(s: Sentence) -> PromptReading:
     clauses = Clauses(s, people, places)
     robot_clauses = RobotClauses(s, people, clauses)
     groups = Groups(s, places, finder, clauses, robot_clauses)
-    mentions = joined_couples(s, people, kin_families(s, without_described_things(s, without_named_events(s, without_activity_times(s, without_awaited_things(s, without_closers(s, without_causers(s, without_second_names(s, without_asides(s, with_people_after_an_event(s, with_counts_before(s, finder.mention_at, finder.find()))))))))))))  # "Mum and Dad", "a man and his wife": one group of two
+    mentions = joined_couples(s, people, kin_families(s, without_described_things(s, without_named_events(s, without_activity_times(s, without_awaited_things(s, without_awaited_comers(s, without_closers(s, without_causers(s, without_second_names(s, without_asides(s, with_people_after_an_event(s, with_counts_before(s, finder.mention_at, finder.find())))))))))))))  # "Mum and Dad", "a man and his wife": one group of two
     taken_by_each(s, people, mentions)
     found = robot_clauses.find(mentions)
     robot = robot_clauses.reading(found)

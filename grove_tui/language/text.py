@@ -13,6 +13,7 @@ from __future__ import annotations
 import re
 import unicodedata
 
+from grove_tui.language.robot_typos import with_robot_spelt
 from grove_tui.language.paired_kin import as_paired_kin
 from grove_tui.language.bare_items import bare_items
 from grove_tui.language.bracketed_counts import commas_for_brackets
@@ -106,7 +107,7 @@ def normalise(text: str) -> str:
     folded = unicodedata.normalize("NFKC", text or "")
     kept = "".join(" " if unicodedata.category(ch) in _DROPPED_CATEGORIES or _variation_selector(ch) else ch
                    for ch in folded)
-    kept = towards_for_direction(names_unstopped(kept))  # "the T. rex", "St. Mary's ward": no sentence end
+    kept = towards_for_direction(names_unstopped(with_robot_spelt(kept)))  # "scared of the robto": the robot  # "the T. rex", "St. Mary's ward": no sentence end
     kept = robot_sent(robot_chat(some_one(chat_years(spell_out(count_words_spelt(kept))))))  # "walkin frm", "robo shd wait": chat's dropped g, short words
     kept = placing_lists(placing_verbs(kin_counts(chat_lists(chat_people(as_paired_kin(kept))))))  # "a father-and-daughter pair": "a father-daughter pair"  # "... n 3 drivers @", "Post a trio ...", "twin toddlers"
     kept = _JOINING_SIGN.sub(" and ", _PLUS_COUNT.sub(r"at least \1", _PLUS_WORD.sub(r"at least \1", _TILDE.sub("about ", kept))))

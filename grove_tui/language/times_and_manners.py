@@ -4,7 +4,9 @@
   Tuesday", "in the rush hour", "over the Easter weekend" (the phrase's head is a word of the calendar);
 - a clock time: "at half past nine", "at quarter to ten", "at nine o'clock", "by 9.30";
 - how people go: "on foot", "on tiptoe", "on crutches", "on their bikes", "by bike", "by bus", "in a hurry",
-  "in single file", "in pairs";
+  "in single file", "in pairs"; round 69: "at the double", "at a trot", "at full tilt", and a thing held ready
+  ("passports at the ready", "mops at hand"), and what people are busy in, said bare ("in induction", "in
+  rehearsal", not "in the training room");
 - round 54: the start or end of a span, "from first light", "since dawn", "until dusk", "from opening time",
   "until closing".
 """
@@ -41,6 +43,12 @@ _BY_MANNER = frozenset("bike bicycle car bus coach train taxi cab tram boat ferr
 _IN_MANNER = frozenset("hurry rush panic huff daze dash flap frenzy trance single file pair pairs twos threes "
                        "fours silence tears uniform costume disguise convoy procession formation "
                        "tandem unison".split())
+# What people are busy in, said bare after "in" ("six trainees in induction", "in rehearsal", "in session").
+_IN_ACTIVITY = frozenset("induction training rehearsal session consultation conversation assessment orientation "
+                         "detention treatment briefing debrief conference discussion prayer class".split())
+# How people go or hold things, said after "at" ("at the double", "at a trot", "tickets at the ready").
+_AT_MANNER = frozenset("ready double trot canter gallop jog sprint crawl speed pace haste leisure ease hand full "
+                       "pelt".split())
 _OWNERS = frozenset("a an the their his her my our your its".split())
 
 
@@ -59,6 +67,10 @@ def time_or_manner(s: Sentence, k: int, prep: str) -> bool:
         return True  # "by bike", "by bus" (not "by the bus stop")
     if prep == "in" and first in _IN_MANNER:
         return True  # "in a hurry", "in single file", "in pairs"
+    if prep == "in" and j == k and first in _IN_ACTIVITY and not _a_place_noun_after(s, j):
+        return True  # "the academy has six trainees in induction": busy in it, no room "induction"
+    if prep == "at" and first in _AT_MANNER and not _a_place_noun_after(s, j):
+        return True  # "passports at the ready", "at the double", "at a trot", "at full tilt"
     if prep in ("at", "by", "around", "about", "after", "before", "until", "till") and _clock(s, k):
         return True  # "at half past nine", "by 9.30", "at ten o'clock"
     if prep in ("from", "since", "until", "till") and j == k and first in _HOURS_WORDS and \
