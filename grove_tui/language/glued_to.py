@@ -13,7 +13,8 @@ from grove_tui.language.places import PlaceIndex
 from grove_tui.language.tokens import phrase_lemmas, words
 
 _GLUED = re.compile(r"\b(?:glued|rooted|riveted|chained|welded|fixed)\s+to\s+(?P<np>(?:the|a|an|his|her|their|its)\s+"
-                    r"[\w'’ -]+?)(?=\s*(?:[,;:.!?]|\band\b|\bwhile\b|\bwhilst\b|\bbut\b|\bas\b|$))", re.IGNORECASE)
+                    r"[\w'’ -]+?)(?=\s*(?:[,;:.!?]|\b(?:and|while|whilst|but|as|in|on|at|by|with|near|beside|wait|waits|sit|sits)\b|$))",
+                    re.IGNORECASE)  # "glued to the cricket in the living room": what holds them ends at "in"
 
 
 def as_kept_at(text: str, index: PlaceIndex) -> str:
