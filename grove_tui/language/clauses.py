@@ -22,7 +22,7 @@ from grove_tui.language.stay_particles import after_a_stay
 from grove_tui.language.manner import pace, together
 from grove_tui.language.event_causes import left_thing
 from grove_tui.language.particle_ends import place_end
-from grove_tui.language.handled_fixtures import CHECKING_VERBS
+from grove_tui.language.handled_fixtures import CHECKING_VERBS, STUDYING_VERBS
 from grove_tui.language.going_idioms import straight_for
 from grove_tui.language.going_verbs import goes_to_after, named_thing, obliged_to, sets_off_for
 from grove_tui.language.pronoun_places import searched_or_queued_for
@@ -411,7 +411,7 @@ class Clauses(ClauseCues):
             return False  # "wheels a roll cage from ... to ...": the thing moved, no place of theirs
         if ((s.w[i].pos == "VERB" or self.people.third_person_verb(i)) and v not in lx.INTENT_VERBS
                 and v not in lx.START_OBJECT_VERBS  # "abandon their desks", "desert the ward": the place left
-                and (v not in lx.ROBOT_VERBS or v in CHECKING_VERBS)  # "checks the drugs trolley": at it
+                and (v not in lx.ROBOT_VERBS or v in CHECKING_VERBS or v in STUDYING_VERBS)  # "checks the drugs trolley": at it
                 and v not in lx.HOLDING_VERBS  # "carrying coffees": no place
                 and (nxt in lx.DETERMINERS or self.places.names_place(obj)) and not s.hyphen_inside(i - 1)
                 and not (i > 0 and s.low[i - 1] == "with")  # "with hired clubs": a modifier of what they hold

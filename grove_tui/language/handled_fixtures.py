@@ -19,6 +19,9 @@ _LOOKING_VERBS = {"out": frozenset({"check", "scope", "suss"}), "over": frozense
 # the lifeboat"): they are the robot's verbs too ("inspects the robot"), but with a place of the world for
 # their object, people are at the thing they check.
 CHECKING_VERBS = frozenset("check inspect examine investigate recheck".split())
+# Verbs of looking long at a thing, the robot's verbs of looking too ("photographs the robot"): with a
+# fixture of the world for their object, people are at it ("eighteen engineers studying the whale skeleton").
+STUDYING_VERBS = frozenset("study scrutinise scrutinize photograph film sketch".split())
 _IN_BETWEEN = frozenset({"about", "around", "away", "themselves", "himself", "herself", "itself"})
 _ARTICLES = frozenset({"the", "a", "an", "one", "some", "those", "these", "that", "this", "both", "all"})
 

@@ -7,7 +7,10 @@ refused by name, as "head for the library" is when the world has none. Only kind
 Round 53: a room searched for by name ("drift out of the gallery looking for the book room", "searching for
 the quiet lounge"): "the" and a name whose last word is a word of a room (room, office, lounge, studio ...)
 that no place of the world is called is refused the same way. A room the world has, under any alias, is
-left to the reader."""
+left to the reader.
+
+Round 70: a kind of place searched for with "the" in one word ("in search of the café", "looking for the
+lifts") that the world has no place called is refused the same way: a place sought is still a place said."""
 
 from __future__ import annotations
 
@@ -39,9 +42,11 @@ def searched_unknown(prompt: str, index: PlaceIndex) -> list[str]:
     for m in _SEARCH.finditer(prompt):
         words = [w.strip(".,;:!?").lower() for w in m.group(2).split()]
         by_name = m.group("det").lower() == "the"
-        for end in (range(min(3, len(words)), 1, -1) if by_name else (2, 1)):
+        for end in (range(min(3, len(words)), 0, -1) if by_name else (2, 1)):
             phrase = words[:end]
-            if by_name and (phrase[-1] not in ROOM_HEADS or not all(w.isalpha() for w in phrase)):
+            if by_name and end == 1 and phrase[0] not in PLACE_KINDS:
+                continue  # "in search of the café": one word, a kind of place; "the office" alone is no name
+            if by_name and end > 1 and (phrase[-1] not in ROOM_HEADS or not all(w.isalpha() for w in phrase)):
                 continue
             if not by_name and (len(phrase) < end or "_".join(phrase) not in PLACE_KINDS):
                 continue

@@ -12,6 +12,7 @@ from grove_tui.language.places import PlaceIndex
 from grove_tui.language.text import plain
 from grove_tui.language.tokens import lemma, verb_lemma
 from grove_tui.language.person_shapes import person_shaped
+from grove_tui.language.short_place_swaps import swapped_short_word
 
 
 @lru_cache(maxsize=2048)
@@ -109,6 +110,9 @@ def _correction(words: Sequence[Word], k: int, index: PlaceIndex) -> str | None:
         return short
     if len(low) < 3:
         return None
+    swapped = swapped_short_word(low, *_content_neighbours(words, k), index)
+    if swapped is not None:
+        return swapped  # "the rehab gmy": gym
     as_written = {v for v in index.name_words if abs(len(v) - len(low)) <= 1 and one_edit(low, v)}
     as_plural = {v for v in index.name_words if base != low and abs(len(v) - len(base)) <= 1 and one_edit(base, v)}
     found = sorted(as_written | as_plural)

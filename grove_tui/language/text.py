@@ -13,6 +13,7 @@ from __future__ import annotations
 import re
 import unicodedata
 
+from grove_tui.language.posture_manners import without_posture_before_going
 from grove_tui.language.robot_typos import with_robot_spelt
 from grove_tui.language.paired_kin import as_paired_kin
 from grove_tui.language.bare_items import bare_items
@@ -124,6 +125,7 @@ def normalise(text: str) -> str:
     kept = _YEAR_PERSON.sub(lambda m: m.group(0) if year_of_people(kept, m.end()) else f"{m.group(1)} year student{m.group(2)}", kept)  # "third-year law students"
     kept = _ROUNDS.sub(lambda m: _PATROL_FORMS[m.group(1).split()[0].lower()], kept)
     kept = kept_away(where_commas(kept))  # "keeping away from the kitchen": avoiding it; "the boardroom where eight people are": the people a group of their own
+    kept = without_posture_before_going(kept)  # "shuffles on his knees after the robot": after it
     return " ".join(bare_items(kept).split())  # "..., intern at printer": one person, an item of its own
 
 

@@ -10,7 +10,8 @@ Wandering with somewhere to go is walking there ("stroll to the café", "wander 
 except between shops (round 44): "a couple wander from the paint aisle over to lighting", "two teens drift
 from the sports shop to the games shop". Going from one shop (or a shop's department) to another with no
 errand said is browsing one's way round: they wander. From a shop to a café, a tunnel or a museum, or with
-an errand ("... to pick up a day pass"), they walk.
+an errand ("... to pick up a day pass"), they walk. Round 70: so do those who go to a shop said by what is
+there ("drift over from the cat aisle to where the snakes live"): a goal sought, no browsing.
 
 A chore's word that is a thing's adjective ("carries clean linen to ward B", "the robot carries clean towels
 from the laundry") is no chore: said after a verb or a determiner and before the noun it describes."""
@@ -65,6 +66,8 @@ def browsing_between_shops(index: PlaceIndex, places: Sequence[Place], purpose: 
         return False
     starts = [p for p in places if p.prep in _STARTS and p.match is not None]
     ends = [p for p in places if p.prep in _ENDS and p.match is not None]
+    if any(p.words[:1] in (("where",), ("wherever",)) for p in ends):
+        return False  # "drift over from the cat aisle to where the snakes live": a goal said by what is there
     return bool(starts) and bool(ends) and all(_browsed(index, p) for p in (*starts, *ends))
 
 
