@@ -118,6 +118,7 @@ from grove_tui.language.joined_kinds import with_joined_kinds
 from grove_tui.language.counted_lists import with_counted_lists
 from grove_tui.language.named_lists import with_named_lists
 from grove_tui.language.treated_everyone import without_treated_everyone
+from grove_tui.language.wheeled_states import without_wheeled_states
 from grove_tui.language.rough_scales import with_rough_scales
 from grove_tui.language.comma_names import without_name_commas
 from grove_tui.language.counted_outings import with_counted_outings
@@ -228,7 +229,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = as_work_at_posts(as_simple_work(text))  # "Janet is manning the desk", "Maria runs the issue desk": she mans it
     text = with_fronted_movers(text)  # "Pushing her dad's wheelchair, a woman brings him ...": her dad goes too
     text = without_staying_before_passive_moves(text)  # "the travellers waiting there are sent up X": "the travellers there are sent up X"
-    text = without_treated_everyone(text)  # "to make everyone a brew": a brew, no crowd of everyone
+    text = without_wheeled_states(without_treated_everyone(text))  # "wheels a snoozing baby": a baby; "to make everyone a brew": a brew, no crowd of everyone
     text = with_crammed_in(text)  # "nine porters are crammed into the lounge": they are in it
     text = with_talk_idioms(text)  # "orderlies chinwag by the lifts": they chat there
     text = with_small_held_fronts(text)  # "Mug in hand, a keeper walks ...": no one called Mug
