@@ -135,7 +135,7 @@ PERSON_NOUNS = frozenset(
     customer client shopper tourist traveller traveler passenger man woman boy girl gentleman lady elderly senior
     volunteer caregiver paramedic intern developer engineer member attendee participant crowd throng horde audience congregation group team party
     occupant user walker runner diner commuter spectator fan player athlete pilgrim inpatient outpatient therapist
-    technician radiologist dentist chef cook waiter waitress barista boss professor pupil infant housemate sibling
+    technician radiologist dentist vet chef cook waiter waitress barista boss professor pupil infant housemate sibling
     brother sister son daughter husband wife partner relative cousin uncle aunt courier smoker jogger pair
     stranger newcomer latecomer passerby bystander onlooker stakeholder executive director secretary assistant
     analyst programmer designer consultant contractor electrician plumber technician inspector officer police
