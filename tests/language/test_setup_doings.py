@@ -17,3 +17,12 @@ import pytest
 def test_both_set_up_groups_are_read(read, world, prompt, places):
     groups = read(world, prompt).groups
     assert [g.location for g in groups] == places
+
+
+@pytest.mark.parametrize("world,prompt", [
+    ("hospital", "Put two porters in the cafeteria and one group leader by the pharmacy."),
+    ("hospital", "Have three visitors in the cafeteria and a team leader by the pharmacy."),
+])
+def test_a_leader_named_by_a_collective_is_one_person(read, world, prompt):
+    first, leader = read(world, prompt).groups
+    assert leader.count.value == 1 and leader.location == "pharmacy"
