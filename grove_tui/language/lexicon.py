@@ -135,7 +135,7 @@ PERSON_NOUNS = frozenset(
     customer client shopper tourist traveller traveler passenger man woman boy girl gentleman lady elderly senior
     volunteer caregiver paramedic intern developer engineer member attendee participant crowd throng horde audience congregation group team party
     occupant user walker runner diner commuter spectator fan player athlete pilgrim inpatient outpatient therapist
-    technician radiologist dentist chef cook waiter waitress barista boss professor pupil infant housemate sibling
+    technician radiologist dentist vet chef cook waiter waitress barista boss professor pupil infant housemate sibling
     brother sister son daughter husband wife partner relative cousin uncle aunt courier smoker jogger pair
     stranger newcomer latecomer passerby bystander onlooker stakeholder executive director secretary assistant
     analyst programmer designer consultant contractor electrician plumber technician inspector officer police
@@ -210,7 +210,7 @@ MULTIWORD_PEOPLE: frozenset[tuple[str, ...]] = frozenset(tuple(p.split()) for p 
     "au pair", "station master", "tour guide", "ground crew", "cabin crew", "lollipop lady",
     "night porter", "head waiter", "shop assistant", "sales assistant", "flight crew", "crossing guard",
     "best man", "maid of honour", "night shift", "day shift", "early shift", "late shift", "morning shift",
-    "evening shift", "cleaning crew", "dinner lady", "tea lady", "new starter", "new hire", "new joiner"))
+    "evening shift", "cleaning crew", "dinner lady", "tea lady", "new starter", "new hire", "new joiner", "team leader", "group leader", "squad leader", "team captain"))
 # Animals and things that can be counted and do something, but are nobody a crowd simulation places
 # ("two cats sleep on the sofa", "three trolleys stand by the door").
 NON_PEOPLE = frozenset("""cat dog puppy kitten bird pigeon sparrow seagull gull crow horse pony donkey cow sheep goat

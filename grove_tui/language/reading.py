@@ -116,6 +116,10 @@ from grove_tui.language.setup_orders import as_setup_orders
 from grove_tui.language.included_members import with_included_members
 from grove_tui.language.joined_kinds import with_joined_kinds
 from grove_tui.language.counted_lists import with_counted_lists
+from grove_tui.language.named_lists import with_named_lists
+from grove_tui.language.treated_everyone import without_treated_everyone
+from grove_tui.language.wheeled_states import without_wheeled_states
+from grove_tui.language.setup_doings import with_setup_doings_after
 from grove_tui.language.rough_scales import with_rough_scales
 from grove_tui.language.comma_names import without_name_commas
 from grove_tui.language.counted_outings import with_counted_outings
@@ -219,13 +223,14 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = without_number_words(text, index)  # "to number 107": to the room 107
     text = with_chat_ing_items(with_chat_articles(with_chat_pairs(text)))  # "couple at the suv, sales guy nr the stand": a couple, a sales guy
     text = as_dropped_off(as_ordered_clauses(as_got_out(as_workers(text))), index)  # "Have Janet man the front desk": Janet mans it; "get the parents in X out by Y"; "leaves a box with the desk": drops it off there
-    text = as_setup_orders(text)  # "Set up a class of fifteen in X and two helpers in Y": "Have ..."
+    text = with_setup_doings_after(as_setup_orders(text))  # "Have one porter folding sheets in X and ...": "one porter in X folding sheets"; "Set up a class of fifteen in X and two helpers in Y": "Have ..."
     text = with_counted_outings(as_outing_parties(text))  # "a stag do of twelve": a stag party of twelve; "twenty on the tour": twenty people on it
-    text = with_counted_collectives(with_scale_figures(with_joined_kinds(with_counted_lists(with_rough_scales(with_scale_and_figures(text))))))  # "the cast of 14", "Six of Blue Watch"; "the hundred-odd travellers": about 100; "ten men and women": ten people
+    text = with_counted_collectives(with_scale_figures(with_joined_kinds(with_counted_lists(with_named_lists(with_rough_scales(with_scale_and_figures(text)))))))  # "the cast of 14", "Six of Blue Watch"; "the hundred-odd travellers": about 100; "ten men and women": ten people
     text = with_places_having_people(with_queues_had(with_queue_lengths(text)), index)  # "the line at X is forty strong", "X has a line of 3": they queue at X; "the academy has six trainees in induction": six are in it
     text = as_work_at_posts(as_simple_work(text))  # "Janet is manning the desk", "Maria runs the issue desk": she mans it
     text = with_fronted_movers(text)  # "Pushing her dad's wheelchair, a woman brings him ...": her dad goes too
     text = without_staying_before_passive_moves(text)  # "the travellers waiting there are sent up X": "the travellers there are sent up X"
+    text = without_wheeled_states(without_treated_everyone(text))  # "wheels a snoozing baby": a baby; "to make everyone a brew": a brew, no crowd of everyone
     text = with_crammed_in(text)  # "nine porters are crammed into the lounge": they are in it
     text = with_talk_idioms(text)  # "orderlies chinwag by the lifts": they chat there
     text = with_small_held_fronts(text)  # "Mug in hand, a keeper walks ...": no one called Mug

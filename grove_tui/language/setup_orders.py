@@ -11,7 +11,7 @@ import re
 from grove_tui.language import lexicon as lx
 
 _NUMBER = "|".join(sorted((w for w in lx.NUMBER_WORDS if w.isalpha()), key=len, reverse=True))
-_ORDER = re.compile(r"(^|[.!?;]\s+)(?:[Ss]et up|[Ss]et out|[Ll]ay on|[Aa]rrange|[Oo]rgani[sz]e|[Ss]tage)\s+"
+_ORDER = re.compile(r"(^|[.!?;]\s+)(?:[Ss]et up|[Ss]et out|[Pp]lace|[Pp]osition|[Ss]tation|[Ll]ay on|[Aa]rrange|[Oo]rgani[sz]e|[Ss]tage)\s+"
                     r"(?=(?:a|an|some|several|\d+|" + _NUMBER + r")\b)")
 
 

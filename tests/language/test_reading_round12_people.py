@@ -5,7 +5,7 @@ each placed on their own keeps each place."""
 import pytest
 
 COMPOUND_PEOPLE = [
-    ("hotel", "Two team leaders walk from the lobby to the restaurant.", "leader", 2),
+    ("hotel", "Two team leaders walk from the lobby to the restaurant.", "team leader", 2),
     ("hotel", "Seven night-shift workers leave through the main entrance.", "worker", 7),
     ("hotel", "Three part-time cleaners walk to the restaurant.", "cleaner", 3),
     ("ferry_terminal", "Two part-time stewards walk to the check-in hall.", "steward", 2),
