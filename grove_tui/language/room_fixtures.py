@@ -64,8 +64,8 @@ def room_fixture_said(s: Sentence, k: int, j: int) -> tuple[PlaceMatch, tuple[Pl
     entry = s.index.entry(room.name) if room is not None and room.exact and room.kind == "zone" else None
     if entry is None or tuple(said) not in entry.phrases:
         return None  # "the women's toilet", "the manager's office": an owner, no room's name
-    inside = [m for m in s.index.candidates(phrase_lemmas(s.low[mark + 1:j])) if m.kind == "entity" and m.zone == room.name]
+    inside = [m for m in s.index.candidates(phrase_lemmas(s.low[mark + 1:j])) if m.kind == "entity" and m.zone == entry.name]
     if not inside or len(inside) > 1 and inside[1].score >= inside[0].score - 1e-9:
         return None  # "the food court's counter" of several counters there: not decided by the room
-    found = PlaceMatch(inside[0].name, "entity", room.name, 1.0, True)
-    return found, (found, 1.0, f"'{' '.join(s.low[k:j])}': the {found.name} of {room.name}, the room said", ())
+    found = PlaceMatch(inside[0].name, "entity", entry.name, 1.0, True)
+    return found, (found, 1.0, f"'{' '.join(s.low[k:j])}': the {found.name} of {entry.name}, the room said", ())
