@@ -20,5 +20,4 @@ def heading_adverb(s: Sentence, phrase: Sequence[str], j: int) -> bool:
         return False
     if j + 1 < s.n and s.low[j + 1] not in _GOING_ON and not s.is_punct(j + 1):
         return False
-    pair = (lemma(phrase[-1]), lemma(s.low[j]))
-    return not any(pair == tuple(p[x:x + 2]) for e in s.index.entries for p in e.phrases for x in range(len(p) - 1))
+    return (lemma(phrase[-1]), lemma(s.low[j])) not in s.index.name_pairs  # "back row" keeps its "back"

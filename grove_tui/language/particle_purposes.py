@@ -8,11 +8,12 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.tokens import lemma
 
 VERB_PARTICLES = frozenset("in off out up back down over away on".split())
 
 
-def particle_verb(low: Sequence[str], k: int, knows: Callable[[str], bool], lemma: Callable[[str], str]) -> bool:
+def particle_verb(low: Sequence[str], k: int, knows: Callable[[str], bool]) -> bool:
     """Whether the word at k, after "to", is a verb with its particle ("hand in their coats")."""
     if k + 2 >= len(low) or low[k + 1] not in VERB_PARTICLES or low[k + 2] not in lx.DETERMINERS:
         return False

@@ -213,7 +213,7 @@ class Sentence:
             # (but "to book a study room": a verb and its object)
         return self.w[k].tag == "VB" or self.w[k].pos == "VERB" or verb_lemma(w) != w or w in (
             "register", "check", "pick", "buy", "pay", "collect", "see", "get", "eat", "drink", "use") or \
-            particle_verb(self.low, k, self.index.knows, lemma)  # "to hand in their coats"
+            particle_verb(self.low, k, self.index.knows)  # "to hand in their coats"
 
     def around_follows(self, i: int) -> bool:
         return i + 1 < self.n and self.low[i + 1] in ("around", "about")
