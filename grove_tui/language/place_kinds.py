@@ -34,6 +34,8 @@ def absent_kind(index: PlaceIndex, lemmas: Sequence[str]) -> str | None:
         if kind not in PLACE_KINDS and not building:
             continue
         parts = kind.split("_")
+        if building and kind not in PLACE_KINDS and words[-len(parts):] != parts:
+            continue  # "the college bar", "the museum shop": a building said of the place, not named as it
         if all(_named(index, p) for p in parts) or any(_named(index, p) for p in parts if p not in _SHARED):
             return None  # the world has it ("bowling alley" where an alley is a bowling alley), or a synonym
         said = kind.replace("_", " ")

@@ -41,3 +41,12 @@ def test_a_kind_of_building_the_world_is_or_has_is_kept(read, world, prompt, rol
 def test_a_word_making_a_kind_of_place_is_not_respelt(read, world, prompt, kind):
     reading = read(world, prompt)
     assert kind in reading.unknown_places and reading.groups[0].destination is None
+
+
+@pytest.mark.parametrize("world, prompt, place", [
+    ("student_union", "Two freshers head to the college bar.", "bar"),
+    ("museum", "A dad pops into the library cafe.", "cafe"),
+])
+def test_a_building_said_of_a_place_is_no_kind_named(read, world, prompt, place):
+    reading = read(world, prompt)
+    assert reading.groups[0].destination == place and not reading.unknown_places
