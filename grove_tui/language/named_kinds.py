@@ -28,7 +28,10 @@ def by_head_alone(index: PlaceIndex, lemmas: Sequence[str], match: PlaceMatch | 
         return False
     entry = index.entry(match.name)
     if not match.exact:
-        return entry is not None and _for_other_people(entry, lemmas)
+        if entry is None or not _for_other_people(entry, lemmas):
+            return False
+        whole = index.by_meaning(" ".join(lemmas), among={entry.name})
+        return not whole or whole[0].similarity < WHOLE_AGREES  # "the tourist centre" is the travel centre
     if entry is None or (lemmas[-1],) not in entry.phrases:
         return False
     if any(len(p) > 1 and all(t in lemmas for t in p) for p in entry.phrases):
