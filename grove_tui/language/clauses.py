@@ -37,6 +37,7 @@ from grove_tui.language.people import People
 from grove_tui.language.ahead_of_events import ahead_of_event
 from grove_tui.language.place_carried import bare_place_at, from_is_where_got, purpose_said
 from grove_tui.language.place_contrast import avoided_places, left_for
+from grove_tui.language.preferred_places import chosen_at, over_at
 from grove_tui.language.place_ordinals import series_number_at
 from grove_tui.language.refused_destinations import refused_destination_after
 from grove_tui.language.place_phrases import Place, PlacePhrases
@@ -384,6 +385,16 @@ class Clauses(ClauseCues):
             place = self.places.phrase(i + 1, "obj:at", i, record_unknown=False, mentioned=False)
             self._take(scan, i, place.end if place is not None else i + 1)
             return True
+        if (k := chosen_at(s, i)) is not None and (chosen := self.places.phrase(k, "obj:dest", i)) is not None:
+            # "choose the library over the state dining room": where they go, and a place they do not
+            c.places.append(chosen)
+            c.has_action, c.intent, end = True, c.intent or "walk", chosen.end
+            if (o := over_at(s, i, end)) is not None and (over := self.places.phrase(
+                    o, "at", end, record_unknown=False, mentioned=False)) is not None:
+                c.avoid.extend(avoided_places(s.index, c.places, over) if over.match is not None else [])
+                end = over.end
+            self._take(scan, i, end)
+            return True
         if v in lx.ZONE_EMPTYING_VERBS and s.is_verb(i) and not s.after_determiner(i) and \
                 nxt in lx.DETERMINERS | {"out"}:
             # "clear the platform", "empty out the ward": the zone everybody leaves
@@ -435,6 +446,9 @@ class Clauses(ClauseCues):
                 end = s.phrase_end(obj)
                 thing = role == "obj:seen" or ((v in lx.THING_OR_PLACE_VERBS or left_thing(s, i)) and end < s.n
                                                and s.preposition(end) is not None)  # "left a bag by the door"
+                part = end - 1 - (s.low[end - 1] in ("just", "right", "directly", "immediately") and end - 2 >= obj)
+                if s.lemma(part) in lx.PLACE_PARTS and v in lx.THING_OR_PLACE_VERBS and end < s.n and s.preposition(end):
+                    return False  # "mops the floor (just) outside the kitchen": the floor of the place said next
                 place = self.places.phrase(obj, role, i, record_unknown=not thing)
                 if place is not None and not any(x in lx.ROBOT_WORDS for x in place.words):
                     c.places.append(place)

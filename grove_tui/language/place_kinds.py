@@ -11,28 +11,15 @@ from collections.abc import Sequence
 from grove_tui.language import lexicon as lx
 from grove_tui.language.places import PlaceIndex
 from grove_tui.language.sentence import Sentence
-from grove_tui.language.sport_kinds import SPORT_KINDS, only_the_head
+from grove_tui.language.place_kind_words import BUILDING_KINDS as BUILDING_KINDS, PLACE_KINDS as PLACE_KINDS
+from grove_tui.language.sport_kinds import only_the_head
 from grove_tui.language.tier_places import absent_tier, tier_place as tier_place
-from grove_tui.language.trade_places import TRADE_PLACES
 from grove_tui.language.tokens import lemma
 
-# Facilities people name by their kind: each is a kind of place of its own, never a word for rooms in
-# general ("room", "hall", "area") nor for what a room is for ("music", "stock").
-PLACE_KINDS = frozenset("""
-planetarium aquarium observatory greenhouse conservatory arboretum zoo aviary vivarium
-sauna jacuzzi solarium spa steam_room hot_tub ice_rink rink skatepark skate_park bowling_alley bowling arcade
-casino nightclub disco karaoke
-chapel church mosque synagogue temple prayer_room multifaith_room
-nursery creche crèche playground play_area soft_play
-barber barbershop hairdresser salon nail_bar beauty_salon tattoo
-bank post_office launderette laundrette laundromat
-mortuary morgue maternity_ward maternity labour_ward
-music_room game_room art_room art_studio craft_room sewing_room playroom play_room dance_studio dance_hall
-recording_studio billiard_room snooker_room trophy_room darkroom screening_room
-baby_changing baby_change nappy_change parent_room first_aid lost_property
-""".split()) | TRADE_PLACES | SPORT_KINDS
 # A name this near the kind's word in meaning is that kind under another word ("creche": "nursery").
 SYNONYM_NEAR = 0.75
+# A building kind this near what the world is, is the world itself ("the school" of a dance school).
+WORLD_NEAR = 0.6
 
 
 def absent_kind(index: PlaceIndex, lemmas: Sequence[str]) -> str | None:
@@ -43,12 +30,17 @@ def absent_kind(index: PlaceIndex, lemmas: Sequence[str]) -> str | None:
     words = [t for t in lemmas if t]
     pairs = ["_".join(words[i:i + 2]) for i in range(len(words) - 1)]
     for kind in [*pairs, *words]:
-        if kind not in PLACE_KINDS:
+        building = kind in BUILDING_KINDS
+        if kind not in PLACE_KINDS and not building:
             continue
         parts = kind.split("_")
+        if building and kind not in PLACE_KINDS and words[-len(parts):] != parts:
+            continue  # "the college bar", "the museum shop": a building said of the place, not named as it
         if all(_named(index, p) for p in parts) or any(_named(index, p) for p in parts if p not in _SHARED):
             return None  # the world has it ("bowling alley" where an alley is a bowling alley), or a synonym
         said = kind.replace("_", " ")
+        if building and index.near_building(said) >= WORLD_NEAR:
+            return None  # "the supermarket" of a supermarket: the building itself
         near = index.by_meaning(said)
         if near and near[0].similarity >= SYNONYM_NEAR and not only_the_head(kind, near[0].nearest):
             return None

@@ -90,6 +90,9 @@ def thing_of_named_zone(index: PlaceIndex, low: Sequence[str], lemmas: Sequence[
     zone = index.match(phrase_lemmas(room)) if room else None
     if zone is None or zone.kind != "zone" or not zone.exact:
         return None
+    whole = index.match(lemmas) if len(lemmas) > 1 else None
+    if whole is not None and whole.exact and whole.zone == zone.name:
+        return whole, end  # "the fire door in the Egyptian gallery": the one named whole, not its main door
     thing = thing_of_zone(index, lemmas[-1], zone.name)
     return (thing, end) if thing is not None else None
 

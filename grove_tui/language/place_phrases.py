@@ -35,7 +35,7 @@ from grove_tui.language.sibling_kinds import sibling_kind
 from grove_tui.language.ridden_things import ridden_on
 from grove_tui.language.worked_states import past_state
 from grove_tui.language.worn_fixtures import worn_fixture
-from grove_tui.language.place_possessed import owned_places
+from grove_tui.language.place_possessed import own_rooms, owned_places
 from grove_tui.language.its_places import its_place
 from grove_tui.language.movers import carried_in, taken_in
 from grove_tui.language.on_the_way import on_ones_way
@@ -177,7 +177,7 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         if named_entry is not None and named_owner in named_entry.tokens and lemmas and lemmas[-1] in named_entry.tokens:
             named_owner = None  # "the women's toilet": the owner is part of the place's own name
         owner = named_owner or (owner_at(s, self.owner, at) if possessive else None)  # "Little Tom's" a child
-        owned = owned_by_name(s, at, k, lemmas) or (self._owned(lemmas, match, owner) if owner and said_before is None else None)
+        owned = owned_by_name(s, at, k, lemmas) or (self._owned(lemmas, match, owner or "") if (owner or possessive) and said_before is None else None)
         owned = handled_door_room(s, prep, at, lemmas, owned[0] if owned else match, lambda ls: owned_by_name(
             s, at, k, ls) or (self._owned(ls, None, owner) if owner else None)) or owned  # "shuts her office door"
         if owned is None and possessive and low[k] == "its":  # "platform one ... through its emergency exit": that platform's
@@ -301,16 +301,15 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         return bool(alternatives) and match.zone in self.context_zones
 
     def _owned(self, lemmas: Sequence[str], match: PlaceMatch | None, owner: str) -> Decided | None:
-        """"her office", "their room", "the kids' bed": of the places named like the phrase, the one that
-        belongs to the kind of person whose clause it is ("the director ... her office": the director's
-        office), or a thing of that kind in a room of theirs ("mum ... her bed": the bed of the parents'
-        bedroom)."""
-        content = [t for t in lemmas if t not in lx.PLACE_MODIFIERS]
-        if not content:
+        """"her office", "their room", "the kids' bed": of the places named like the phrase, the one that belongs
+        to the kind of person whose clause it is ("the director ... her office": the director's office), or a
+        thing of that kind in a room of theirs ("mum ... her bed": the bed of the parents' bedroom)."""
+        if not (content := [t for t in lemmas if t not in lx.PLACE_MODIFIERS]):
             return None
         head = content[-1]
         # their room called so, else a thing in a room of theirs ("the parents' bed"), else any of theirs
-        owned = owned_places(self.s.index.entries, self.s.index.owned_by(owner), head)
+        owned = owned_places(self.s.index.entries, self.s.index.owned_by(owner) if owner else [], head)
+        owned = own_rooms(self.s.index.entries, owned, lemmas) or owned  # "her room": a bedroom, not the residents' lounge
         mine = [e for e in owned if match is not None and e.name == match.name]
         if len(owned) > 1 and not mine:
             owned = [e for e in owned if e.kind == "zone"] or owned  # "her office": the room, not its door
@@ -554,8 +553,9 @@ class PlacePhrases(EmptiedZones, PlaceMeaning):
         j = k
         while j < s.n and j < k + 3 and (s.low[j] in lx.PLACE_MODIFIERS or lemma(s.low[j]) in lx.PLACE_PARTS):
             j += 1
-        if j > k and j < s.n and s.low[j] == "of" and lemma(s.low[j - 1]) in lx.PLACE_PARTS:
-            return s.skip(j + 1, lx.DETERMINERS)
+        if j > k and j < s.n and s.low[j] == "of" and lemma(s.low[j - 1]) in lx.PLACE_PARTS or j < s.n - 2 and \
+                lemma(s.low[j]) == "row" and s.low[j + 1] == "of" and self.names_place(j + 2):  # "the back row of screen 2"
+            return s.skip(j + 1 if s.low[j] == "of" else j + 2, lx.DETERMINERS)
         return past_state(s, k)  # "the jammed pinsetter": the pinsetter, in a state
 
     def names_place(self, k: int) -> bool:

@@ -12,6 +12,7 @@ from grove_tui.language.places import PlaceIndex
 from grove_tui.language.text import plain
 from grove_tui.language.tokens import lemma, verb_lemma
 from grove_tui.language.person_shapes import person_shaped
+from grove_tui.language.place_kind_words import makes_a_kind
 from grove_tui.language.short_place_swaps import swapped_short_word
 
 
@@ -99,6 +100,8 @@ def _correction(words: Sequence[Word], k: int, index: PlaceIndex) -> str | None:
         return None
     if person_shaped(words, k):
         return None  # "two posties carry sacks": a person the lexicon lacks, not "posts"
+    if makes_a_kind(base, *_content_neighbours(words, k)):
+        return None  # "the post office": a kind of place (a world may lack), not "poster office"
     person = near_person_noun(low)
     if person is not None and person not in index.vocabulary:
         return None  # "docters": a person, read by the people rule ("securty" is both: a place here)
