@@ -180,6 +180,7 @@ from grove_tui.language.they_all import all_go_on
 from grove_tui.language.talk_idioms import with_talk_idioms
 from grove_tui.language.got_up import got_up_and_went
 from grove_tui.language.clause_passes import with_clause_passes
+from grove_tui.language.reduced_passives import reduced_to_active
 from grove_tui.language.counted_chat_waits import as_counted_chat_wait
 from grove_tui.language.listed_chat_waits import as_listed_chat_wait
 from grove_tui.language.chat_meetings import with_chat_meetings
@@ -263,7 +264,8 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     words = as_singular_verbs(as_verbs(parse(text)))  # "the carers in the lounge leg it": a verb, not "lounge leg"
     active = to_active(text, words)
     if active is None:
-        active = crowded_places_to_active(text, words) or followed_route_first(text, words)  # "X is swamped by people drifting over from Y"
+        active = crowded_places_to_active(text, words) or followed_route_first(text, words) or \
+            reduced_to_active(text, words)  # "X is swamped by people drifting over from Y"; "a baby carried by her dad to X"
     late = active is None and (active := late_agents_to_active(text, words)) is not None  # "is wheeled up to ward B by a porter": the taker first
     # "a pupil is taken to ... by the nurse": "the nurse takes a pupil to ..."
     if active is not None:
