@@ -19,7 +19,7 @@ _TRADES = lx.AGENT_SUFFIXES + ("ent",)
 _NAMED = re.compile(r"(?<![\w'’-])((?:[A-Z][a-z]{0,8}\.? )?)([A-Z][a-z]+) the ([a-z]+)(?= (\w+))")
 # A role, then the name between commas, then a verb said of one ("the guide, Maria, leads ..."); or the name
 # with its role between commas ("Maria, the guide, leads ...").
-_ROLE_NAME = re.compile(r"(?<![\w'’-])((?:[Tt]he|[Oo]ur|[Mm]y|[Hh]is|[Hh]er|[Tt]heir|[Aa]n?) (?:[a-z]+ )?)([a-z]+), "
+_ROLE_NAME = re.compile(r"(?<![\w'’-])((?:[Tt]he|[Oo]ur|[Mm]y|[Hh]is|[Hh]er|[Tt]heir|[Aa]n?) (?:[\w-]+ ){0,3})([a-z]+), "
                         r"((?:[A-Z][a-z]{0,8}\.? )?[A-Z][a-z]+(?: [A-Z][a-z]+)?), (?=(\w+))")
 _NAME_ROLE = re.compile(r"(?<![\w'’-])([A-Z][a-z]+\.?(?: [A-Z][a-z]+)?), ((?:the|our|my|his|her|their|a|an) (?:[a-z]+ )?)"
                         r"([a-z]+), (?=(\w+))")

@@ -85,6 +85,8 @@ class PeopleObjects:
         orderly wheels a patient", "a nurse helps an old man"): they go where the leader goes."""
         s = self.s
         p = at - 1
+        if p >= 2 and s.low[p] in _OWNERS and verb_lemma(s.low[p - 1]) in lx.LEADING_VERBS:
+            p -= 1  # "leads her class", "takes his party of pensioners": the group's mention starts after "her"
         leading = p >= 1 and verb_lemma(s.low[p]) in lx.LEADING_VERBS | FETCHING_VERBS
         if p < 1 or not (leading or s.w[p].pos == "VERB") or not (
                 self.people.is_person_noun(p - 1) or shared_subject_is_person(s, self.people, p - 1)

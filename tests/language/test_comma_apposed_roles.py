@@ -24,3 +24,9 @@ def test_the_taken_are_kept(read, world, prompt, taken):
 def test_a_list_of_names_is_no_apposition(read):
     groups = read("hospital", "Ama, Kofi and their gran wait in the cafe.").groups
     assert sum(g.count.value or 0 for g in groups) == 3
+
+
+def test_a_role_with_modifiers_before_the_name(read):
+    groups = read("airport", "The Year 10 coach driver, Mr Pike, takes four pupils to gate B1.").groups
+    assert [g.count.value for g in groups] == [1, 4]
+    assert groups[1].intent == "follow"

@@ -24,3 +24,14 @@ def test_the_robot_takes_them_along(read):
     reading = read("museum", "The robot guides his three nieces to the cafe.")
     assert [g.count.value for g in reading.groups] == [3]
     assert reading.robot is not None and reading.robot.task == "cross"
+
+
+@pytest.mark.parametrize(("world", "prompt"), [
+    ("library", "The teacher brings her class to the seminar room."),
+    ("airport", "A tour rep leads his group to gate A2."),
+])
+def test_a_possessed_collective_follows(read, world, prompt):
+    groups = read(world, prompt).groups
+    assert len(groups) == 2
+    leader, led = groups
+    assert leader.intent == "walk" and led.intent == "follow" and led.follows == leader.who
