@@ -1,6 +1,7 @@
 """People taken somewhere by someone, said with a bare participle after them (round 71): "a baby carried
 by her father to baggage claim", "an old lady pushed by her son heads to the café", "a patient, wheeled by
-a porter, goes to radiology". language/passive_escort.py reads the passive with "is"/"are"; with no
+a porter, goes to radiology"; only verbs of moving someone who does not walk ("pushed", "carried"; not
+"escorted by", "accompanied by": they walk). language/passive_escort.py reads the passive with "is"/"are"; with no
 auxiliary the parser hangs the participle on the person as a clause describing them, and the taken
 person was read walking on their own, or the taker lost. Said in the active ("her father carries a baby
 to baggage claim", "her son pushes an old lady and heads to the café"), the taker walks and the taken
@@ -17,16 +18,19 @@ from grove_tui.language.parser import Word
 from grove_tui.language.passive_escort import _NOT_TAKERS, _ROUTE_WORDS, _span
 from grove_tui.language.tokens import third_person, verb_lemma
 
+# Verbs of moving someone who does not walk: "escorted", "accompanied", "helped by" someone, a person walks
+# with them ("a defendant, accompanied by two guards, walks to the courtroom": the defendant walks).
+_MOVING = frozenset("push wheel carry pull drag roll haul tow piggyback cradle transport ferry steer trundle".split())
 _FINITE = frozenset({"VBZ", "VBP", "VBD"})
 _GOING = frozenset({"walk", "evacuate"})
-_TOWARDS = frozenset("to into towards toward onto through across".split())
+_TOWARDS = frozenset("to into towards toward onto through across up down over out".split())
 
 
 def reduced_to_active(text: str, words: Sequence[Word]) -> str | None:
     """The text with a person "<verb>ed by <taker>" said as "<taker> <verb>s <person>" (module doc); None
     when there is none."""
     out = text
-    for verb in sorted((w for w in words if w.tag == "VBN" and w.dep == "acl" and w.lemma in lx.LEADING_VERBS),
+    for verb in sorted((w for w in words if w.tag == "VBN" and w.dep == "acl" and w.lemma in _MOVING),
                        key=lambda w: -w.i):
         found = _rewritten(text, words, verb)
         if found is not None:

@@ -1,5 +1,5 @@
-"""A role and a name said one between commas (round 71): "the steward, Kemi, shows ...", "Mr Ansah, our
-driver, takes ...": one person, whose verb keeps the people it takes along."""
+"""A role and a name said one between commas (round 71): "the steward, Kemi, shows ...", "our driver,
+Mr Ansah, takes ...": one person, whose verb keeps the people it takes along."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import pytest
 
 CASES = [
     ("station", "The steward, Kemi, shows three passengers to platform 2.", 3),
-    ("airport", "Mr Ansah, our driver, takes a family of four to the check-in desks.", 4),
+    ("airport", "Our driver, Mr Ansah, takes a family of four to the check-in desks.", 4),
     ("library", "A volunteer, Jo Bell, guides five pensioners to the reading room.", 5),
 ]
 

@@ -8,7 +8,7 @@ CASES = [
     ("care_home", "A resident pushed by her daughter to the garden.", "garden"),
     ("mall", "Two small kids, pulled by their grandad in a wagon, roll into the food court.", "food_court"),
     ("museum", "Meanwhile an old man wheeled by a volunteer heads for the cafe.", "cafe"),
-    ("library", "A pupil with a broken leg, helped by two classmates, walks over to the issue desk.", "issue_desk"),
+    ("library", "A pupil with a broken leg, pushed by two classmates, rolls over to the issue desk.", "issue_desk"),
 ]
 
 
@@ -29,3 +29,8 @@ def test_a_stay_after_the_participle_is_left_alone(read):
 def test_the_taken_as_an_object_is_left_alone(read):
     reading = read("hospital", "The robot passes a patient wheeled by a porter.")
     assert all(g.intent != "follow" for g in reading.groups)
+
+
+def test_accompanied_people_walk_themselves(read):
+    groups = read("library", "A new reader, accompanied by a librarian, walks to the reading room.").groups
+    assert groups[0].intent == "walk"
