@@ -22,6 +22,15 @@ _NOT_ORDERED = frozenset({"look", "go", "get", "make", "have", "be", "do", "let"
 _VERBS = "|".join(sorted((v for v in _ORDERED - _NOT_ORDERED if v.isalpha()), key=len, reverse=True))
 _ORDER = re.compile(r"(^|[.!?;:]\s+|\s*,?\s*\b(?:and|then|so|please)\s+|,\s+)(?:please\s+)?(?:[Hh]ave|[Gg]et|[Ll]et|[Mm]ake)\s+"
                     rf"({_PERSON})\s+({_VERBS})\b(?!-)")
+# People with any number said in words ("twelve pupils", "a few porters").
+_NUMBERS = "|".join(sorted(set(lx.UNITS) | set(lx.TENS) | {"a few", "several", "a dozen", "a handful of"}, key=len, reverse=True))
+_COUNTED = rf"(?:(?:{_NUMBERS})(?:\s+(?!to\b)[a-z][\w'-]*){{1,3}}?)"
+# Asked, told or wanted to ("Get a porter to take ...", "Tell three guards to wait ...", "I'd like five shoppers
+# to queue ...", "we need a cleaner to walk ..."): the same order, said with "to".
+_ASKED = re.compile(r"(^|[.!?;:]\s+|\s*,?\s*\b(?:and|then|so|please)\s+|,\s+)(?:please\s+)?"
+                    r"(?:(?:[Ii]|[Ww]e)(?:'d|’d|\s+would|\s+also|\s+really)?\s+(?:like|need|want|love)|[Gg]et|[Tt]ell|"
+                    r"[Aa]sk|[Ii]nstruct|[Oo]rder|[Nn]eed|[Ww]ant|[Aa]llow)\s+"
+                    rf"({_PERSON}|{_COUNTED})\s+to\s+({_VERBS})\b(?!-)")
 
 
 def as_ordered_clauses(text: str) -> str:
@@ -39,4 +48,4 @@ def as_ordered_clauses(text: str) -> str:
         if not lead.strip() or lead.strip()[-1] in ".!?:":
             person = person[:1].upper() + person[1:]  # a sentence's first word, as written
         return f"{lead}{person} {third_person(verb) if _singular(person) else verb}"
-    return _ORDER.sub(said, text)
+    return _ASKED.sub(said, _ORDER.sub(said, text))

@@ -28,13 +28,16 @@ _NUMBER = r"(?:\d+|" + "|".join(sorted((w for w in lx.NUMBER_WORDS if w.isalpha(
 _N_AND = re.compile(r"(?<=[\w.])\s+n\s+(?=(?:" + _NUMBER + r"|a|an|some|the|like|about|approx|few|couple)\b)")
 # "like 40 teens": about forty; not after a word that wants ("would like 2 guards", "I'd like").
 _LIKE = re.compile(r"\blike\s+(?=(?:" + _NUMBER + r")\b)", re.IGNORECASE)
+# "something like 40", "smth like 5", "somewhere around 30", "in the region of 50": about that many.
+_SOMETHING_LIKE = re.compile(r"\b(?:(?:something|smth|sth|summat|somewhere|somethin)\s+(?:like|about|around|near)|"
+                             r"in\s+the\s+region\s+of)\s+(?=(?:" + _NUMBER + r")\b)", re.IGNORECASE)
 _WANTING = frozenset("would 'd i we you they should also really don't do does did".split())
 
 
 def chat_lists(text: str) -> str:
     """The text with chat's " n ", "like <number>" and short words written out (see the module doc)."""
     text = _N_AND.sub(" and ", text)
-    text = _LIKE.sub(_about, text)
+    text = _LIKE.sub(_about, _SOMETHING_LIKE.sub(lambda m: "About " if m.group(0)[:1].isupper() else "about ", text))
     text = _UNJOINED.sub(_joined, text)
     return _SHORT_WORD.sub(lambda m: CHAT_SHORT[m.group(1)], text)
 

@@ -17,6 +17,10 @@ from grove_tui.language.tokens import lemma, verb_lemma
 
 _TRADES = lx.AGENT_SUFFIXES + ("ent",)
 _NAMED = re.compile(r"(?<![\w'’-])((?:[A-Z][a-z]{0,8}\.? )?)([A-Z][a-z]+) the ([a-z]+)(?= (\w+))")
+# A role, then the name between commas, then a verb said of one ("the guide, Maria, leads ..."). ("Wilfred, a
+# resident, shuffles ..." is read by language/people.py's fronted names.)
+_ROLE_NAME = re.compile(r"(?<![\w'’-])((?:[Tt]he|[Oo]ur|[Mm]y|[Hh]is|[Hh]er|[Tt]heir|[Aa]n?) (?:[\w-]+ ){0,3})([a-z]+), "
+                        r"((?:[A-Z][a-z]{0,8}\.? )?[A-Z][a-z]+(?: [A-Z][a-z]+)?), (?=(\w+))")
 # Capitalised words that open a sentence before "the nurse ...", and are no names.
 _NOT_NAMES = frozenset("then later meanwhile next now today tonight tomorrow yesterday afterwards soon first finally "
                        "again once still also suddenly eventually there here".split())
@@ -50,4 +54,17 @@ def without_apposed_roles(text: str) -> str:
             return f"{before}the {role}"  # "Then Pete the butcher nips": "Then the butcher nips"
         opening = m.start() == 0 or text[:m.start()].rstrip().endswith((".", "!", "?", ";"))
         return f"{'The' if opening else 'the'} {role}"
-    return _NAMED.sub(cut, text)
+    return _ROLE_NAME.sub(_role_first, _NAMED.sub(cut, text))
+
+
+def _said_of_one(verb: str) -> bool:
+    return verb.endswith(("s", "ed")) and verb_lemma(verb) != verb
+
+
+def _role_first(m: re.Match[str]) -> str:
+    """"The guide, Maria, leads": "The guide leads" (the name between commas only says who the role is)."""
+    words = m.group(3).split()
+    if not (_a_trade(m.group(2)) and all(_a_name(w.rstrip(".")) or w.rstrip(".").lower() in lx.TITLES for w in words)
+            and _said_of_one(m.group(4))):
+        return m.group(0)
+    return f"{m.group(1)}{m.group(2)} "

@@ -13,7 +13,7 @@ from grove_tui.language.caused_motion import moves_along, route_after, taking_ve
 from grove_tui.language.moved_pronouns import moved_pronoun
 from grove_tui.language.owned_rides import own_ride
 from grove_tui.language.titled_couples import couple_end
-from grove_tui.language.counts import quantifier
+from grove_tui.language.counts import Quantifier, quantifier
 from grove_tui.language.movers import FETCHING_VERBS
 from grove_tui.language.possessed_people import possessed_head
 from grove_tui.language.people import People
@@ -65,6 +65,15 @@ def _waited_for(s: Sentence, at: int) -> bool:
 _RIDDEN_BY_ONE = frozenset("wheelchair pram buggy pushchair stroller bed stretcher gurney".split())
 
 
+_OWNERS = frozenset({"his", "her", "their", "my", "our", "your"})
+
+
+def _counted_at(s: Sentence, at: int) -> Quantifier | None:
+    """The count of the phrase at `at`, after a possessive too ("leads her twelve pupils", "follow their
+    two teachers", round 71)."""
+    return quantifier(s, at) or (quantifier(s, at + 1) if s.low[at] in _OWNERS else None)
+
+
 class PeopleObjects:
     def __init__(self, s: Sentence, people: People) -> None:
         self.s = s
@@ -76,13 +85,15 @@ class PeopleObjects:
         orderly wheels a patient", "a nurse helps an old man"): they go where the leader goes."""
         s = self.s
         p = at - 1
+        if p >= 2 and s.low[p] in _OWNERS and verb_lemma(s.low[p - 1]) in lx.LEADING_VERBS:
+            p -= 1  # "leads her class", "takes his party of pensioners": the group's mention starts after "her"
         leading = p >= 1 and verb_lemma(s.low[p]) in lx.LEADING_VERBS | FETCHING_VERBS
         if p < 1 or not (leading or s.w[p].pos == "VERB") or not (
                 self.people.is_person_noun(p - 1) or shared_subject_is_person(s, self.people, p - 1)
                 or each_leader(s, self.people, p - 1) is not None  # "two porters, each pushing a patient"
                 or aside_leader(s, self.people, p - 1) is not None):  # "a porter, pushing a woman in a wheelchair"
             return False  # "a guard waits on platform 1, then leads four passengers": the guard's too
-        q = quantifier(s, at)
+        q = _counted_at(s, at)
         start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
         start = s.skip(start, {"of", "the"})
         head = self.people.person_head(start, counted=q is not None)
@@ -128,7 +139,7 @@ class PeopleObjects:
         p = at - 1
         if p < 1 or s.verb(p) not in lx.SENT_VERBS or not self.people.is_person_noun(p - 1):
             return False
-        q = quantifier(s, at)
+        q = _counted_at(s, at)
         start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
         return self.people.person_head(start, counted=q is not None) is not None
 
@@ -145,7 +156,7 @@ class PeopleObjects:
             return False
         if s.low[at] in ("the", "this", "that", "these", "those"):
             return False  # "students follow the consultant": the one they go behind, said as known
-        q = quantifier(s, at)
+        q = _counted_at(s, at)
         start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
         return self.people.person_head(start, counted=q is not None) is not None
 
@@ -157,7 +168,7 @@ class PeopleObjects:
         scene all the same."""
         s = self.s
         noun = s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
-        if noun >= s.n or (self.people.person_head(self._phrase_head(at), counted=quantifier(s, at) is not None)
+        if noun >= s.n or (self.people.person_head(self._phrase_head(at), counted=_counted_at(s, at) is not None)
                            is None and not self.people.is_person_noun(noun)):
             return None
         p = at - 1
@@ -213,6 +224,6 @@ class PeopleObjects:
 
     def _phrase_head(self, at: int) -> int:
         s = self.s
-        q = quantifier(s, at)
+        q = _counted_at(s, at)
         start = q.end if q is not None else s.skip(at, lx.DETERMINERS | lx.NP_MODIFIERS)
         return s.skip(start, {"of", "the"})

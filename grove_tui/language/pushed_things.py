@@ -26,6 +26,11 @@ def _person_plural(w: Word) -> bool:
         w.lower[:-1] in lx.PERSON_NOUNS
 
 
+def _person_singular(w: Word) -> bool:
+    """A person said as one, whatever the parser took the word for ("auxiliary": an adjective)."""
+    return w.tag in ("NN", "NNP", "JJ") and (w.lower in lx.PERSON_NOUNS or w.lower in lx.KIN_NAMES)
+
+
 def _thing_end(words: list[Word], k: int) -> int | None:
     """The last word of the thing pushed after word k, or None when no noun phrase follows."""
     j, end = k + 1, None
@@ -45,7 +50,10 @@ def as_pushing_verbs(words: list[Word]) -> list[Word]:
     """The parse with a pushing verb taken for a noun after people tagged their verb (module doc)."""
     out = list(words)
     for k, w in enumerate(words):
-        if k == 0 or w.pos != "NOUN" or w.lower not in _FORMS or not _person_plural(out[k - 1]):
+        if k == 0 or w.pos != "NOUN" or w.lower not in _FORMS:
+            continue
+        one = w.lower != _FORMS[w.lower] and _person_singular(out[k - 1])  # "a nursing auxiliary wheels linen"
+        if not (one or _person_plural(out[k - 1])):
             continue
         end = _thing_end(out, k)
         if end is None:
@@ -56,7 +64,7 @@ def as_pushing_verbs(words: list[Word]) -> list[Word]:
             dep, head = "ROOT", k
         else:
             dep, head = "conj", root
-        out[k] = replace(w, pos="VERB", tag="VBP", lemma=_FORMS[w.lower], dep=dep, head=head)
+        out[k] = replace(w, pos="VERB", tag="VBZ" if one else "VBP", lemma=_FORMS[w.lower], dep=dep, head=head)
         for j, x in enumerate(out):
             if j == k:
                 continue

@@ -105,6 +105,7 @@ from grove_tui.language.mention import Mention
 from grove_tui.language.mentions import Mentions
 from grove_tui.language.named_roles import without_apposed_roles
 from grove_tui.language.apposed_members import without_apposed_members
+from grove_tui.language.apposed_parts import with_apposed_parts
 from grove_tui.language.collective_roles import with_collective_roles
 from grove_tui.language.counted_loads import without_counted_loads
 from grove_tui.language.fronted_size_parts import with_fronted_size_parts
@@ -180,6 +181,7 @@ from grove_tui.language.they_all import all_go_on
 from grove_tui.language.talk_idioms import with_talk_idioms
 from grove_tui.language.got_up import got_up_and_went
 from grove_tui.language.clause_passes import with_clause_passes
+from grove_tui.language.reduced_passives import reduced_to_active
 from grove_tui.language.counted_chat_waits import as_counted_chat_wait
 from grove_tui.language.listed_chat_waits import as_listed_chat_wait
 from grove_tui.language.chat_meetings import with_chat_meetings
@@ -253,7 +255,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_little_ones(with_described_youngest(text))  # "leads the little one": "the little child"
     text = with_fronted_size_parts(with_fronted_whole_articles(text))  # "Of nine potters ..., a trio": "Of the nine ..."; "Of the twelve in X, a trio are called": "three of them"
     text = with_fronted_subsets(without_signal_fronts(without_finished_acts(without_awaited_arrivals(text))))  # "Before the boss gets in, ...", "When the teacher claps, ...": left out; "Of the nine sat in X, a pair get up": "Of the nine people ..., a pair of them"
-    text = without_apposed_members(with_included_members(text))  # "Kayleigh, one of the lifeguards, leaves": "Kayleigh leaves"; "a family of seven, grandparents included,": "including grandparents"
+    text = with_apposed_parts(without_apposed_members(with_included_members(text)))  # "Kayleigh, one of the lifeguards, leaves": "Kayleigh leaves"; "a family of seven, grandparents included,": "including grandparents"
     text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
     text = without_relative_pasts(text)  # "kids who've sat through the film pile out of X": "kids pile out of X"
     text = as_kept_at(without_seen_to_by(with_events_left_for(as_stopped_by(text, index), index)), index)  # "abandon their desks for the briefing at the whiteboard": they go there; "to be seen by the medics at X": to X; "glued to the wallboard": at it  # "stops by the toy store to buy a gift", "pops by the pharmacy": goes to it
@@ -263,7 +265,8 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     words = as_singular_verbs(as_verbs(parse(text)))  # "the carers in the lounge leg it": a verb, not "lounge leg"
     active = to_active(text, words)
     if active is None:
-        active = crowded_places_to_active(text, words) or followed_route_first(text, words)  # "X is swamped by people drifting over from Y"
+        active = crowded_places_to_active(text, words) or followed_route_first(text, words) or \
+            reduced_to_active(text, words)  # "X is swamped by people drifting over from Y"; "a baby carried by her dad to X"
     late = active is None and (active := late_agents_to_active(text, words)) is not None  # "is wheeled up to ward B by a porter": the taker first
     # "a pupil is taken to ... by the nurse": "the nurse takes a pupil to ..."
     if active is not None:
