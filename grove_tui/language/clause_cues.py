@@ -43,6 +43,8 @@ class ClauseCues:
         if verb_lemma(s.low[aux]) not in ("be", "get") and s.low[aux] not in ("being", "been"):
             return None
         k = s.skip(i + 1, {"quickly", "calmly", "immediately", "swiftly", "gently", "all"})
+        if k + 1 < s.n and s.verb(i) in ("call", "summon") and s.low[k] == "out" and s.low[k + 1] in ("to", "into", "onto"):
+            return None  # "is called out to the test car park": summoned there by name, no evacuation
         if k < s.n and s.low[k] in ("out", "away", "home", "outside"):
             return k + 1
         if k + 1 < s.n and s.low[k] == "to" and s.verb(k + 1) in lx.DEPARTURE_VERBS:

@@ -16,7 +16,7 @@ from dataclasses import dataclass, field, replace
 from grove_tui.language import lexicon as lx
 from grove_tui.language.clause_cues import ClauseCues
 from grove_tui.language.settled_after_leaving import settled_after_leaving, settled_at
-from grove_tui.language.coming_in import lets_self_in, settled_after_coming
+from grove_tui.language.coming_in import SWIPING_VERBS, lets_self_in, settled_after_coming
 from grove_tui.language.counts import duration_at
 from grove_tui.language.stay_particles import after_a_stay
 from grove_tui.language.manner import pace, together
@@ -208,7 +208,7 @@ class Clauses(ClauseCues):
             # "pour off platform 2" names a place; "drop off a parcel" only a particle and a thing
             place = self._there(i, width, name) if i + width < s.n and s.low[i + width] == "there" else \
                 self.places.phrase(i + width, name, i, record_unknown=name != "off")
-            if place is not None and name in lx.VIA_PREPOSITIONS | {"by"} and i > 0 and s.low[i - 1] == "in" and \
+            if place is not None and name in lx.VIA_PREPOSITIONS | {"by"} and i > 0 and (s.low[i - 1] == "in" or s.verb(i - 1) in SWIPING_VERBS) and \
                     place.match is not None and place.match.kind == "door":
                 place = replace(place, prep="from")  # "pour in through the main doors": in from there
             elif place is not None and name == "by" and i > 0 and s.low[i - 1] == "out" and \

@@ -2,7 +2,10 @@
 rear exit and settle at their desks", "two nurses come in through the side door and sit down at the
 station". "let themselves in" is coming in, though "let" is no verb of going; and a verb of sitting down
 said after a verb of coming in does not make the clause a wait at the door they came by: they walk in,
-and where they sit is where they go."""
+and where they sit is where they go.
+
+Round 72: a card or pass swiped at a door or gate ("swipe through the main gate and drift over to ...",
+"badge through the turnstiles"): coming in there, so the door is where they start, as "come in through" is."""
 
 from __future__ import annotations
 
@@ -15,6 +18,8 @@ _IN = frozenset({"in", "into", "inside"})
 # Verbs of sitting down somewhere to stay: after coming in, where they end up.
 _SETTLING = frozenset({"sit", "settle", "perch"})
 _ENTERING = frozenset({"enter", "arrive"})
+# Verbs of passing a door by a card or pass: "swipe through the gate" is coming in by it.
+SWIPING_VERBS = frozenset("swipe badge tap scan clock buzz".split())
 
 
 def lets_self_in(s: Sentence, i: int) -> bool:

@@ -23,6 +23,7 @@ from grove_tui.language.hazard_scares import scare_cue
 from grove_tui.language.outside_sources import outside_at
 from grove_tui.language.place_kinds import PLACE_KINDS
 from grove_tui.language.sentence import Sentence
+from grove_tui.language.trouble_events import trouble_cue
 from grove_tui.language.weather_damage import damage_cue
 
 # Nouns that say a hazard by what is noticed ("fumes", "sparks"), beside the lexicon's hazard nouns.
@@ -69,7 +70,8 @@ def cue(s: Sentence, i: int) -> bool:
         return True  # "the alarm goes off", "alarms are sounding"
     if w == "burst" and (nxt in _BURST or after in _BURST):
         return True
-    if event_cue(s, i) or gas_cue(s, i) or scare_cue(s, i) or giving_off_cue(s, i) or damage_cue(s, i):  # "a pipe bursts", "a heater sparks"
+    if event_cue(s, i) or gas_cue(s, i) or scare_cue(s, i) or giving_off_cue(s, i) or damage_cue(s, i) or \
+            trouble_cue(s, i):  # "a pipe bursts", "a heater sparks"
         return True
     # "catches fire", and the British "catches light" / "caught light" (never "catches the light": a shine).
     return w == "on" and nxt == "fire" or w in ("ablaze", "alight") or (

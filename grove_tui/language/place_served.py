@@ -2,6 +2,9 @@
 served in the bar", "a man queues to pay for his shopping at the supermarket". The room said holds a
 counter, till or desk people are served at (tagged for service or a queue); someone there to pay, to be
 served or to order stands at it, not anywhere in the room.
+
+Round 72: a room that is itself a kiosk or booth ("lined up at the tobacco kiosk to buy cigarettes", "queue
+at the chip kiosk to buy chips") is the serving place said: people queue at it, named as it is.
 """
 
 from __future__ import annotations
@@ -14,6 +17,8 @@ from grove_tui.language.places import PlaceEntry, PlaceIndex
 _SERVED = re.compile(r"^(?:to |in order to |so as to )?(?:pay|be served|get served|order|check ?out|buy|purchase)\b")
 # What a fixture people are served at is called ("counter", "till", "checkout", "desk", "bar").
 _SERVING_WORDS = frozenset("counter till checkout desk cashier cash bar kiosk window".split())
+# Kinds of room that are themselves where people are served.
+_SELF_SERVING = frozenset({"kiosk", "booth"})
 
 
 def served_fixture(index: PlaceIndex, purpose: str | None, location: str | None) -> str | None:
@@ -22,7 +27,7 @@ def served_fixture(index: PlaceIndex, purpose: str | None, location: str | None)
     if not purpose or not location or not _SERVED.match(purpose.lower().strip()):
         return None
     room = index.entry(location)
-    if room is None or room.kind != "zone":
+    if room is None or room.kind != "zone" or room.types & _SELF_SERVING:
         return None
     fixtures = [e for e in index.entries if e.kind == "entity" and e.zone == room.name and _serves(e)]
     if not fixtures:

@@ -131,6 +131,7 @@ from grove_tui.language.signal_fronts import without_signal_fronts
 from grove_tui.language.side_places import with_side_places
 from grove_tui.language.stopping_by import as_stopped_by
 from grove_tui.language.left_for_events import with_events_left_for
+from grove_tui.language.closed_behind import as_left_behind_door
 from grove_tui.language.seen_to_by import without_seen_to_by
 from grove_tui.language.glued_to import as_kept_at
 from grove_tui.language.lent_arms import as_arm_escort
@@ -258,6 +259,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = with_apposed_parts(without_apposed_members(with_included_members(text)))  # "Kayleigh, one of the lifeguards, leaves": "Kayleigh leaves"; "a family of seven, grandparents included,": "including grandparents"
     text = without_apposed_roles(text)  # "Pete the butcher nips across": "Pete nips across"
     text = without_relative_pasts(text)  # "kids who've sat through the film pile out of X": "kids pile out of X"
+    text = as_left_behind_door(text)  # "pulls her office door to and ...": leaves her office
     text = as_kept_at(without_seen_to_by(with_events_left_for(as_stopped_by(text, index), index)), index)  # "abandon their desks for the briefing at the whiteboard": they go there; "to be seen by the medics at X": to X; "glued to the wallboard": at it  # "stops by the toy store to buy a gift", "pops by the pharmacy": goes to it
     text = as_gone_to(as_going_in(as_heading(with_vehicle_loads(text))))  # "go and flop in X": "go to X"; "locks himself in the gents": "heads into the gents"  # "a minibus of pensioners": a minibusload; "a coachload descends on the café": "heads to the café"
     text = as_placing_clause(text)

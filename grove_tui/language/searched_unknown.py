@@ -10,7 +10,10 @@ that no place of the world is called is refused the same way. A room the world h
 left to the reader.
 
 Round 70: a kind of place searched for with "the" in one word ("in search of the café", "looking for the
-lifts") that the world has no place called is refused the same way: a place sought is still a place said."""
+lifts") that the world has no place called is refused the same way: a place sought is still a place said.
+
+Round 72: a kind of room said with a hyphened word before a room's word ("in search of a multi-faith room",
+"looking for a first-aid room") is a kind of place too, refused when the world has no place of that name."""
 
 from __future__ import annotations
 
@@ -48,10 +51,15 @@ def searched_unknown(prompt: str, index: PlaceIndex) -> list[str]:
                 continue  # "in search of the café": one word, a kind of place; "the office" alone is no name
             if by_name and end > 1 and (phrase[-1] not in ROOM_HEADS or not all(w.isalpha() for w in phrase)):
                 continue
-            if not by_name and (len(phrase) < end or "_".join(phrase) not in PLACE_KINDS):
+            hyphened_room = (not by_name and end == 2 and len(phrase) == 2 and phrase[1] in ROOM_HEADS
+                             and re.fullmatch(r"[a-z]+(?:-[a-z]+)+", phrase[0]) is not None)
+            if not by_name and not hyphened_room and (len(phrase) < end or "_".join(phrase) not in PLACE_KINDS):
                 continue
+            said = " ".join(phrase)
+            if hyphened_room:
+                phrase = [*phrase[0].split("-"), phrase[1]]
             match = index.match(phrase_lemmas(phrase) if by_name else phrase)
             if match is None or not match.exact:
-                found.append(" ".join(phrase))
+                found.append(said)
             break
     return found

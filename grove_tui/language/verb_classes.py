@@ -18,6 +18,7 @@ from __future__ import annotations
 from grove_tui.language import lexicon as lx
 from grove_tui.language.escaped_people import escapes_a_person
 from grove_tui.language.activity_nouns import ACTIVITY_PHRASES
+from grove_tui.language.spanned_intents import spanned_intent
 from grove_tui.language.hauled_loads import hauls_a_load
 from grove_tui.language.going_verbs import THING_TAKING_VERBS, carries_a_thing_to, more_verb_intent
 from grove_tui.language.leaving import LEAVING_PHRASES, LEAVING_VERBS
@@ -122,6 +123,9 @@ def phrasal_intent(s: Sentence, i: int) -> tuple[tuple[str, ...], str] | None:
             if phrase[-1] in _AROUND and i + len(phrase) < s.n and s.low[i + len(phrase)] in _ON_TO:
                 continue  # "walks round to the bar": going there the way round, not wandering about
             return phrase, intent
+    spanned = spanned_intent(s, i)  # "swap holiday stories", "snake back from the hatch"
+    if spanned is not None:
+        return spanned
     lined = lined_queue(s, i)  # "form a long line at the servery", "join the back of the long queue"
     if lined is not None:
         return lined, "queue"
