@@ -4,7 +4,7 @@ grandpa leave ...", "Sister Quinn, Dr Patel and a registrar hurry ..." are one g
 go together, like a list of names (`named_lists.py`). Kept only for three or more members (a comma in
 the list), each one person: a name (titled or not: "Dr Patel") or one person word after "the", "a",
 "an" or an owner ("her", "their"), with at most two words before it ("a floor runner", "her little
-brother"). A list with a count in it ("A doctor, two nurses and a porter") or a pair ("the bride and
+brother"), one of them at least a name or someone's relative. A list with a count in it ("A doctor, two nurses and a porter") or a pair ("the bride and
 her dad", the older sets' two groups) is left alone."""
 
 from __future__ import annotations
@@ -12,6 +12,7 @@ from __future__ import annotations
 import re
 
 from grove_tui.language import lexicon as lx
+from grove_tui.language.named_lists import _NOT_NAMES
 
 _NUMBER = {3: "Three", 4: "Four", 5: "Five", 6: "Six"}
 _PERSON = lx.PERSON_NOUNS | lx.KIN_NAMES | lx.PERSON_THINGS
@@ -32,7 +33,9 @@ def _one_person(member: str) -> bool:
         return bool(rest) and rest[-1] in _PERSON and not set(rest) & _NOT_WORDS
     if len(words) == 2:  # "Dr Patel", "Sister Quinn"
         return words[0].lower().rstrip(".") in lx.TITLES
-    return len(words) == 1 and words[0].lower() not in _NOT_WORDS
+    low = words[0].lower()  # a name, not a fronted word ("Plastered, the best man and his brother ...")
+    return len(words) == 1 and low not in _NOT_WORDS and low not in _NOT_NAMES and \
+        not low.endswith(("ed", "ing", "ly", "ous", "ful", "less", "ish"))
 
 
 def _listed(m: re.Match[str]) -> tuple[str, int] | None:
@@ -54,6 +57,8 @@ def _listed(m: re.Match[str]) -> tuple[str, int] | None:
         return None
     if not any(w.split()[0].lower() in _DETERMINERS or len(w.split()) == 2 for w in members):
         return None  # names only: `named_lists.py`
+    if all(w.split()[0].lower() in ("the", "a", "an") for w in members):
+        return None  # "A dad, a mum and a kid", "The surgeon, a nurse and a porter": a group each (older sets)
     return f"{m.group(1)}{_NUMBER[len(members)]} people", end
 
 
