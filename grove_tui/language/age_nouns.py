@@ -12,7 +12,11 @@ import re
 from grove_tui.language import lexicon as lx
 from grove_tui.language.tokens import lemma, verb_lemma
 
-_AGE = re.compile(r"\b(an?\s+)?(\d{1,3}|" + "|".join(sorted(lx.UNITS, key=len, reverse=True)) +
+# "an eighty-year-old", "a twenty-one-year-old" (round 72): the tens written out, a unit maybe after them.
+_TENS = {"twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "seventy": 70, "eighty": 80,
+         "ninety": 90}
+_TENS_SAID = r"(?:" + "|".join(_TENS) + r")(?:-(?:one|two|three|four|five|six|seven|eight|nine))?|"
+_AGE = re.compile(r"\b(an?\s+)?(\d{1,3}|" + _TENS_SAID + "|".join(sorted(lx.UNITS, key=len, reverse=True)) +
                   r")[- ](year|yr|month|week)s?[- ]old(s?)\b(\W*)(\w*)", re.IGNORECASE)
 _JOINING = frozenset({"and", "or", "but", "while", "with", "who", "as", "then", "both"})
 
@@ -43,11 +47,17 @@ def _person_word(word: str) -> bool:
     return lemma(low) in lx.PERSON_NOUNS or low in lx.PERSON_NOUNS
 
 
+def _years(number: str) -> int:
+    """The age a number word says ("eighty", "twenty-one", "seven")."""
+    tens, _, unit = number.partition("-")
+    return _TENS[tens] + lx.UNITS.get(unit, 0) if tens in _TENS else lx.UNITS[number]
+
+
 def with_age_heads(text: str) -> str:
     """The text with each hyphenated age read as what it says of the person (see the module doc)."""
     def said(m: re.Match[str]) -> str:
         number = m.group(2).lower()
-        years = int(number) if number.isdigit() else lx.UNITS[number]
+        years = int(number) if number.isdigit() else _years(number)
         child = years < 18 or m.group(3).lower() not in ("year", "yr")
         plural, after, word = m.group(4), m.group(5), m.group(6)
         if _noun_use(after, word) or (plural and "'" not in after and not _person_word(word)) or \

@@ -37,6 +37,7 @@ from grove_tui.language.feeling_adjectives import coloured_by_feeling
 from grove_tui.language.feeling_phrases import feelings_said_outright
 from grove_tui.language.fronted_fright_clauses import frightened_by_fronted_clause
 from grove_tui.language.fronted_surprise import surprised_when_fronted
+from grove_tui.language.fronted_fright_moves import feeling_moves_fronted
 from grove_tui.language.answered_alarms import answering_alarms
 from grove_tui.language.leisure_places import leisure_places
 from grove_tui.language.model import PromptReading
@@ -65,6 +66,7 @@ def with_clause_passes(prompt: str, index: PlaceIndex, reading: PromptReading) -
     groups = hiding_after_seeing(groups)  # "sees the robot and scurries off to hide": avoiding it
     groups = surprised_when_fronted(prompt, groups)  # "Startled, the temp leaps back": surprise
     groups = frightened_by_fronted_clause(prompt, groups)  # "Spooked as the robot rolls up, kids scramble off": Scared
+    groups = feeling_moves_fronted(prompt, groups)  # "Rattled by the robot, a gent edges off": Scared, avoiding it
     groups = angry_approach(prompt, groups)  # "Red-faced, a dealer storms up to the robot": a threat
     groups = stepped_aside_in_place(groups)  # "an intern at the printer steps back": stays at the printer
     groups = at_their_workplace(index, groups)  # "the cloakroom attendant hangs up coats": at the cloakroom

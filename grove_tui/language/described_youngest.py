@@ -19,6 +19,12 @@ _ONES = re.compile(r"\b(" + _OWNER + r"((?:\s+" + _WORD + r"){1,2})\s+(?:little|
                    + _ORDER + r"))\s+(one|ones|'un|'uns)\b")
 
 
+# "his drowsy little girl", "her poorly wee brother" (round 72): a describing word before "little" the parser
+# takes for a noun, dropped so that the child is said ("his little girl").
+_LITTLE_KIN = re.compile(r"\b(" + _OWNER + r")\s+(" + _WORD + r")\s+((?:little|wee|tiny|baby)\s+(?:girl|boy|son|"
+                         r"daughter|sister|brother|grandson|granddaughter|niece|nephew|cousin)s?)\b")
+
+
 def _describes(words: str) -> bool:
     """Whether the words between the owner and "youngest" only describe the child: no person, link or verb."""
     return all(w not in _AFTER and w not in lx.PERSON_NOUNS and w.rstrip("s") not in lx.PERSON_NOUNS
@@ -28,6 +34,7 @@ def _describes(words: str) -> bool:
 
 def with_described_youngest(text: str) -> str:
     """The text with "our drowsy youngest" written "our youngest child" (module doc)."""
+    text = _LITTLE_KIN.sub(lambda m: f"{m.group(1)} {m.group(3)}" if _describes(m.group(2)) else m.group(0), text)
     text = _ONES.sub(lambda m: m.group(1) + (" children" if m.group(3).endswith("s") else " child")
                      if _describes(m.group(2)) else m.group(0), text)
     return _MOST.sub(lambda m: _without(m.group(1), m.group(2)) + " child"

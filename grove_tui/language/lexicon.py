@@ -167,7 +167,7 @@ PERSON_NOUNS = frozenset(
  archivist curator guide chaperone minder bodyguard bouncer warden ranger steward marshal
  sheriff detective constable sergeant lieutenant soldier sailor marine veteran cadet
  commissionaire ticketholder shopper buyer seller bargain-hunter punter gambler
- vip dignitary celebrity politician mayor minister diplomat ambassador delegate envoy representative
+ vip councillor councilor alderman dignitary celebrity politician mayor minister diplomat ambassador delegate envoy representative
  spokesperson presenter host moderator panelist panellist attendee exhibitor organiser organizer
  planner coordinator volunteer helper aide assistant intern understudy deputy temp busker
  newborn infant tot kiddo youngster youth lad lass bloke chap fellow fella pal buddy chum dude guy gal granny oldie widow widower

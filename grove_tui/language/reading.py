@@ -118,6 +118,7 @@ from grove_tui.language.included_members import with_included_members
 from grove_tui.language.joined_kinds import with_joined_kinds
 from grove_tui.language.counted_lists import with_counted_lists
 from grove_tui.language.named_lists import with_named_lists
+from grove_tui.language.role_lists import with_role_lists
 from grove_tui.language.treated_everyone import without_treated_everyone
 from grove_tui.language.wheeled_states import without_wheeled_states
 from grove_tui.language.setup_doings import with_setup_doings_after
@@ -228,7 +229,7 @@ def read_prompt(prompt: str, world: World, *, seed: int = 0) -> PromptReading:
     text = as_dropped_off(as_ordered_clauses(as_got_out(as_workers(text))), index)  # "Have Janet man the front desk": Janet mans it; "get the parents in X out by Y"; "leaves a box with the desk": drops it off there
     text = with_setup_doings_after(as_setup_orders(text))  # "Have one porter folding sheets in X and ...": "one porter in X folding sheets"; "Set up a class of fifteen in X and two helpers in Y": "Have ..."
     text = with_counted_outings(as_outing_parties(text))  # "a stag do of twelve": a stag party of twelve; "twenty on the tour": twenty people on it
-    text = with_counted_collectives(with_scale_figures(with_joined_kinds(with_counted_lists(with_named_lists(with_rough_scales(with_scale_and_figures(text)))))))  # "the cast of 14", "Six of Blue Watch"; "the hundred-odd travellers": about 100; "ten men and women": ten people
+    text = with_counted_collectives(with_scale_figures(with_joined_kinds(with_counted_lists(with_role_lists(with_named_lists(with_rough_scales(with_scale_and_figures(text))))))))  # "the cast of 14", "Six of Blue Watch"; "the hundred-odd travellers": about 100; "ten men and women": ten people
     text = with_places_having_people(with_queues_had(with_queue_lengths(text)), index)  # "the line at X is forty strong", "X has a line of 3": they queue at X; "the academy has six trainees in induction": six are in it
     text = as_work_at_posts(as_simple_work(text))  # "Janet is manning the desk", "Maria runs the issue desk": she mans it
     text = with_fronted_movers(text)  # "Pushing her dad's wheelchair, a woman brings him ...": her dad goes too

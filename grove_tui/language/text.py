@@ -73,7 +73,7 @@ _TIMES_AFTER = re.compile(r"\b([A-Za-z]{3,})(?:\s+|\s*\(\s*)[x×]\s?(\d+)\s*\)?(
 _TIMES_BEFORE = re.compile(r"(?<![\w.])(?:(\d+)\s?[x×]|[x×](\d+))\s+(?=[A-Za-z]{3,})")
 
 # "15+ guests", "20+ ppl": at least that many (not "2 nurses + 1 porter", which joins two groups)
-_PLUS_COUNT = re.compile(r"(?<![\w.])(\d+)\s*\+(?=\s*[A-Za-z])")
+_PLUS_COUNT = re.compile(r"(?<![\w.])(\d+)(?:\+|\s+\+(?!\s))(?=\s*[A-Za-z])")
 # "ten-plus guests", "40-plus fans": at least so many, the word written out
 _PLUS_WORD = re.compile(r"\b(\d+|" + _NUMBER_WORD + r")\s*-\s*plus\b(?=\s+[A-Za-z])", re.IGNORECASE)
 # "n=20 pedestrians", "N = 8 agents": a count as a researcher writes it
